@@ -1,0 +1,34 @@
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "cavity/core/error.h"
+#include "cavity/predicates/fp_environment.h"
+#include "commands.h"
+
+int main(int argc, char** argv) {
+    // The predicates are proved for round-to-nearest without flush-to-zero; refuse to run in any
+    // other floating-point environment rather than print wrong signs.
+    if (!cavity::predicates::fp_environment_is_exact()) {
+        std::fprintf(stderr,
+                     "cavity: the floating-point environment is not round-to-nearest double "
+                     "without flush-to-zero; exact predicates cannot run\n");
+        return 2;
+    }
+    CLI::App app{"cavity: exact, instrumented 3D Delaunay triangulation"};
+    app.require_subcommand(1);
+    cavity::cli::add_sign_command(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const cavity::core::Error& e) {
+        std::fprintf(stderr, "cavity: %s\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "cavity: error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

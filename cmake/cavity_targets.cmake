@@ -1,0 +1,25 @@
+# Interface targets every cavity target links: warnings, and the floating-point discipline the exact
+# predicates rely on.
+
+add_library(cavity_warnings INTERFACE)
+add_library(cavity::warnings ALIAS cavity_warnings)
+target_compile_options(cavity_warnings INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+                                                 -Wno-sign-conversion)
+
+# The filters' error bounds and the error-free transformations (two_sum, two_product) assume that
+# every operation is rounded on its own, to nearest, in double precision. A fused multiply-add
+# rounds once for two operations and silently breaks them, so contraction is off everywhere the
+# predicates are evaluated, and that includes callers that inline the filters from the headers.
+# -ffast-math is never allowed: it licenses reassociation and flush-to-zero.
+add_library(cavity_strict_fp INTERFACE)
+add_library(cavity::strict_fp ALIAS cavity_strict_fp)
+target_compile_options(cavity_strict_fp INTERFACE -ffp-contract=off -fno-fast-math
+                                                  -fno-unsafe-math-optimizations)
+
+if(CAVITY_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+if(CAVITY_EXPENSIVE_CHECKS)
+  add_compile_definitions(CAVITY_EXPENSIVE_CHECKS=1)
+endif()

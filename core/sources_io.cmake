@@ -1,0 +1,1 @@
+# Reading and writing points and meshes, generators, insertion orders.

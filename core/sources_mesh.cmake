@@ -1,0 +1,1 @@
+# Storage, Bowyer–Watson insertion, point location, validation.

@@ -1,0 +1,15 @@
+#include "cavity/core/error.h"
+
+namespace cavity::core {
+
+std::string located_message(const std::string& file, std::optional<std::size_t> line,
+                            const std::string& what) {
+    std::string message = file;
+    if (line) {
+        message += ":" + std::to_string(*line);
+    }
+    message += ": " + what;
+    return message;
+}
+
+}  // namespace cavity::core

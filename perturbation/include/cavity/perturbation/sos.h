@@ -1,0 +1,76 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "cavity/predicates/point.h"
+#include "cavity/predicates/sign.h"
+#include "cavity/predicates/stage.h"
+
+/// Symbolic perturbation of the vertex weights (Cheng, Dey & Shewchuk, §2.9; used by §5.2, §5.8).
+///
+/// Scheme. Point i of the input (i = its input index, the perturbation key) gets the weight
+/// w_i + eps^(i+1) for an infinitesimal eps > 0, so its lifted height |p_i|^2 - w_i drops by
+/// eps^(i+1): the lower the key, the larger its perturbation. The perturbed determinant is then a
+/// polynomial in eps whose sign, when the exact (unperturbed) determinant is zero, is that of the
+/// lowest-order nonzero coefficient. Expanding the 5x5 lifted determinant (rows x, y, z, h, 1)
+/// along its height column, the coefficient of eps^(i+1) is minus the cofactor of row i, which is
+/// +-orient3d of the other four points. So a zero is resolved by visiting the five points in key
+/// order and taking the first nonzero cofactor; the cofactor of any row whose other four points
+/// form a non-flat tetrahedron is nonzero, so the result is never zero when the reference
+/// tetrahedron is non-flat.
+///
+/// Consistency. Every predicate that can see the same degeneracy (conflict tests on solid and ghost
+/// tetrahedra, flips, deletion, polygon insertion) uses this one scheme, keyed on the input index,
+/// which is intrinsic to the input: the perturbed (weighted) Delaunay triangulation is unique and
+/// independent of the insertion order, the point-location method and the storage.
+namespace cavity::perturbation {
+
+using predicates::Point3;
+using predicates::Sign;
+using predicates::WeightedPoint3;
+
+/// Perturbation keys (input indices) of the five arguments, in argument order.
+using Keys5 = std::array<std::uint32_t, 5>;
+using Keys4 = std::array<std::uint32_t, 4>;
+
+/// A perturbed predicate's answer: the sign, the stage of the exact evaluation, and how many
+/// orient3d cofactors the perturbation evaluated (0: the exact predicate decided on its own).
+struct SosVerdict {
+    Sign sign;
+    predicates::Stage stage;
+    std::uint8_t cofactors;
+};
+
+/// insphere under the perturbation: kPos when e is inside the perturbed circumball of a, b, c, d
+/// (positively oriented). Never kZero if a, b, c, d is not flat and the five keys are distinct.
+Sign insphere_sos(const Point3& a,
+                  const Point3& b,
+                  const Point3& c,
+                  const Point3& d,
+                  const Point3& e,
+                  const Keys5& keys);
+
+SosVerdict insphere_sos_staged(const Point3& a,
+                               const Point3& b,
+                               const Point3& c,
+                               const Point3& d,
+                               const Point3& e,
+                               const Keys5& keys);
+
+/// orient4d (the power test) under the perturbation. Never kZero if a, b, c, d is not flat.
+Sign orient4d_sos(const WeightedPoint3& a,
+                  const WeightedPoint3& b,
+                  const WeightedPoint3& c,
+                  const WeightedPoint3& d,
+                  const WeightedPoint3& e,
+                  const Keys5& keys);
+
+SosVerdict orient4d_sos_staged(const WeightedPoint3& a,
+                               const WeightedPoint3& b,
+                               const WeightedPoint3& c,
+                               const WeightedPoint3& d,
+                               const WeightedPoint3& e,
+                               const Keys5& keys);
+
+}  // namespace cavity::perturbation

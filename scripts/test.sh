@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# The README's test command: installs what is missing, builds, and runs the test suites.
+#   scripts/test.sh            release build, every test but the `long` label
+#   scripts/test.sh asan       the same under AddressSanitizer + UndefinedBehaviorSanitizer
+#   scripts/test.sh long       the long suites (>= 10^7 oracle queries per predicate, ...)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+preset="${1:-release}"
+configure="$preset"
+[ "$preset" = "long" ] && configure="release"
+
+scripts/install-deps.sh
+cmake --preset "$configure" >/dev/null
+cmake --build --preset "$configure"
+ctest --preset "$preset" -j 2
