@@ -1,12 +1,43 @@
 #include "cavity/predicates/insphere.h"
 
+#include <array>
+#include <cmath>
+#include <optional>
+
+#include "cavity/predicates/detail/expansion.h"
 #include "exact_integer.h"
+#include "lifted_adaptive.h"
+#include "staged_pipeline.h"
 
 namespace cavity::predicates::detail {
+namespace {
+
+std::optional<Sign> insphere_adaptive(const std::array<Point3, 5>& p) {
+    LiftedRows rows{};
+    double tails = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        double tx, ty, tz;
+        two_diff(p[i].x, p[4].x, rows.x[i], tx);
+        two_diff(p[i].y, p[4].y, rows.y[i], ty);
+        two_diff(p[i].z, p[4].z, rows.z[i], tz);
+        // The tails are multiples of 2^-192 below 2^130 here, so this sum of magnitudes is 0
+        // exactly when every tail is.
+        tails += std::abs(tx) + std::abs(ty) + std::abs(tz);
+    }
+    rows.differences_exact = tails == 0.0;
+    return lifted_adaptive(rows);
+}
+
+}  // namespace
 
 Verdict insphere_slow(
     const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
-    return {insphere_exact(a, b, c, d, e), Stage::kExact};
+    return run_after_filter(
+        std::array<Point3, 5>{a, b, c, d, e},
+        kLiftedAdaptiveWindow,
+        [](const auto& p) { return insphere_filter(p[0], p[1], p[2], p[3], p[4]); },
+        insphere_adaptive,
+        [](const auto& p) { return insphere_exact(p[0], p[1], p[2], p[3], p[4]); });
 }
 
 }  // namespace cavity::predicates::detail

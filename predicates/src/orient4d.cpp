@@ -1,15 +1,47 @@
 #include "cavity/predicates/orient4d.h"
 
+#include <array>
+#include <cmath>
+#include <optional>
+
+#include "cavity/predicates/detail/expansion.h"
 #include "exact_integer.h"
+#include "lifted_adaptive.h"
+#include "staged_pipeline.h"
 
 namespace cavity::predicates::detail {
+namespace {
+
+std::optional<Sign> orient4d_adaptive(const std::array<WeightedPoint3, 5>& p) {
+    LiftedRows rows{};
+    double tails = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        double tx, ty, tz, tw;
+        two_diff(p[i].x, p[4].x, rows.x[i], tx);
+        two_diff(p[i].y, p[4].y, rows.y[i], ty);
+        two_diff(p[i].z, p[4].z, rows.z[i], tz);
+        two_diff(p[i].w, p[4].w, rows.w[i], tw);
+        // Tails are nonzero multiples of 2^-332 or zero, and far below overflow here, so this
+        // sum of magnitudes is 0 exactly when every tail is.
+        tails += std::abs(tx) + std::abs(ty) + std::abs(tz) + std::abs(tw);
+    }
+    rows.differences_exact = tails == 0.0;
+    return lifted_adaptive(rows);
+}
+
+}  // namespace
 
 Verdict orient4d_slow(const WeightedPoint3& a,
                       const WeightedPoint3& b,
                       const WeightedPoint3& c,
                       const WeightedPoint3& d,
                       const WeightedPoint3& e) {
-    return {orient4d_exact(a, b, c, d, e), Stage::kExact};
+    return run_after_filter(
+        std::array<WeightedPoint3, 5>{a, b, c, d, e},
+        kLiftedAdaptiveWindow,
+        [](const auto& p) { return orient4d_filter(p[0], p[1], p[2], p[3], p[4]); },
+        orient4d_adaptive,
+        [](const auto& p) { return orient4d_exact(p[0], p[1], p[2], p[3], p[4]); });
 }
 
 }  // namespace cavity::predicates::detail
