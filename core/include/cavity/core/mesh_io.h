@@ -1,0 +1,38 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <vector>
+
+#include "cavity/core/point_set.h"
+
+namespace cavity::core {
+
+/// A tetrahedron as four 0-based input indices.
+using Tet = std::array<std::uint32_t, 4>;
+
+/// Writes PREFIX.node (every input point, numbered from points.index_base, the weight as the
+/// attribute when weighted) and PREFIX.ele (`<#tets> 4 0`, then `i v0 v1 v2 v3` numbered from
+/// points.index_base). Both files are committed together (AtomicFileGroup): on any error neither
+/// appears. Coordinates are printed so that they read back exactly.
+/// \throws Error naming the file for a failed write or a tet index outside the point set.
+void write_tetgen(const std::filesystem::path& prefix,
+                  const PointSet& points,
+                  std::span<const Tet> tets);
+
+/// Writes PREFIX.vtu: a VTK XML UnstructuredGrid (ASCII, Float64 points, cell type 10 =
+/// VTK_TETRA) for ParaView, with the weights as point data when weighted. Atomic as above.
+void write_vtu(const std::filesystem::path& prefix,
+               const PointSet& points,
+               std::span<const Tet> tets);
+
+/// Reads a TetGen .ele file whose vertex references are numbered from `index_base`, returning
+/// 0-based tets. Header `<#tets> <nodes per tet = 4> [<#attributes>]`; element numbers start at 0
+/// or 1 and must be consecutive; attributes are ignored. The caller checks that the indices are
+/// below the number of points.
+/// \throws Error naming the file and line for any malformed, truncated or extra line.
+std::vector<Tet> read_ele(const std::filesystem::path& file, int index_base);
+
+}  // namespace cavity::core

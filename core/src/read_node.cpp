@@ -1,0 +1,87 @@
+#include "point_readers.h"
+#include "text_input.h"
+
+namespace cavity::core {
+
+PointSet read_node(const std::string& file, std::string_view bytes, bool weighted) {
+    const TextSource source(file);
+    LineReader lines(bytes);
+    if (!lines.next()) {
+        source.fail("empty file: no .node header");
+    }
+    // TetGen lets the header stop after any field; missing fields take these defaults.
+    const auto header = split_whitespace(lines.text());
+    const std::size_t header_line = lines.number();
+    if (header.size() > 4) {
+        source.fail(header_line, "the .node header has more than 4 fields");
+    }
+    const std::uint64_t count = source.count(header[0], header_line, "number of points");
+    const std::uint64_t dim =
+        header.size() > 1 ? source.count(header[1], header_line, "dimension") : 3;
+    const std::uint64_t attributes =
+        header.size() > 2 ? source.count(header[2], header_line, "number of attributes") : 0;
+    const std::uint64_t markers =
+        header.size() > 3 ? source.count(header[3], header_line, "number of boundary markers") : 0;
+    if (count == 0) {
+        source.fail(header_line, "the header declares no points");
+    }
+    if (count > 0xFFFF'FFFFu) {
+        source.fail(header_line, "more points than 32-bit indices can number");
+    }
+    if (dim != 3) {
+        source.fail(header_line, "dimension is " + std::to_string(dim) + ", expected 3");
+    }
+    if (markers > 1) {
+        source.fail(header_line, "number of boundary markers must be 0 or 1");
+    }
+    if (weighted && attributes == 0) {
+        source.fail(header_line, "weighted input needs the weight as the first attribute");
+    }
+
+    PointSet result;
+    result.source = file;
+    result.points.reserve(count);
+    if (weighted) {
+        result.weights.reserve(count);
+    }
+    const std::size_t fields = 4 + attributes + markers;
+    for (std::uint64_t i = 0; i < count; ++i) {
+        if (!lines.next()) {
+            source.fail(lines.number(),
+                        "file ends after " + std::to_string(i) + " of " + std::to_string(count) +
+                            " points");
+        }
+        const std::size_t line = lines.number();
+        const auto tokens = split_whitespace(lines.text());
+        if (tokens.size() != fields) {
+            source.fail(line,
+                        "expected " + std::to_string(fields) + " fields, found " +
+                            std::to_string(tokens.size()));
+        }
+        const std::uint64_t index = source.count(tokens[0], line, "point index");
+        if (i == 0) {
+            if (index > 1) {
+                source.fail(line,
+                            "the first point index must be 0 or 1, found " + std::to_string(index));
+            }
+            result.index_base = static_cast<int>(index);
+        } else if (index != result.index_base + i) {
+            source.fail(line,
+                        "point index " + std::to_string(index) + " out of sequence, expected " +
+                            std::to_string(result.index_base + i));
+        }
+        result.points.push_back({source.number(tokens[1], line, "x"),
+                                 source.number(tokens[2], line, "y"),
+                                 source.number(tokens[3], line, "z")});
+        if (weighted) {
+            result.weights.push_back(source.number(tokens[4], line, "weight"));
+        }
+    }
+    if (lines.next()) {
+        source.fail(lines.number(),
+                    "data after the " + std::to_string(count) + " points the header declares");
+    }
+    return result;
+}
+
+}  // namespace cavity::core
