@@ -1,0 +1,58 @@
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "cavity/predicates/point.h"
+#include "cavity/predicates/sign.h"
+
+/// Pieces shared by the cofactor cascades of the perturbed predicates.
+namespace cavity::perturbation {
+
+/// The argument positions sorted by increasing key: the order in which the perturbation terms
+/// dominate (the lowest key has the lowest power of eps). Depends only on the keys, never on where
+/// the points are stored or when they were inserted.
+template <std::size_t N>
+std::array<std::uint8_t, N> key_order(const std::array<std::uint32_t, N>& keys) {
+    std::array<std::uint8_t, N> order{};
+    for (std::size_t i = 0; i < N; ++i) {
+        order[i] = static_cast<std::uint8_t>(i);
+    }
+    std::sort(order.begin(), order.end(), [&keys](std::uint8_t a, std::uint8_t b) {
+        return keys[a] < keys[b];
+    });
+    return order;
+}
+
+/// The sign a cofactor cascade settled on and how many orient3d cofactors it evaluated.
+struct Resolution {
+    predicates::Sign sign;
+    std::uint8_t cofactors;
+};
+
+/// The rows other than row `skipped`, in row order.
+template <std::size_t N>
+std::array<predicates::Point3, N - 1> other_rows(const std::array<predicates::Point3, N>& rows,
+                                                 std::size_t skipped) {
+    std::array<predicates::Point3, N - 1> others{};
+    std::size_t n = 0;
+    for (std::size_t j = 0; j < N; ++j) {
+        if (j != skipped) {
+            others[n++] = rows[j];
+        }
+    }
+    return others;
+}
+
+/// The position of a point, weighted or not: the cofactors never see the weights.
+inline predicates::Point3 position(const predicates::Point3& p) {
+    return p;
+}
+
+inline predicates::Point3 position(const predicates::WeightedPoint3& p) {
+    return {p.x, p.y, p.z};
+}
+
+}  // namespace cavity::perturbation
