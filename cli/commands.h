@@ -7,5 +7,6 @@
 namespace cavity::cli {
 
 void add_sign_command(CLI::App& app);
+void add_generate_command(CLI::App& app);
 
 }  // namespace cavity::cli

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     CLI::App app{"cavity: exact, instrumented 3D Delaunay triangulation"};
     app.require_subcommand(1);
     cavity::cli::add_sign_command(app);
+    cavity::cli::add_generate_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
