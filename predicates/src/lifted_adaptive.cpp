@@ -1,8 +1,11 @@
 #include "lifted_adaptive.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "cavity/predicates/detail/expansion.h"
+#include "small_integers.h"
 
 namespace cavity::predicates::detail {
 namespace {
@@ -124,6 +127,45 @@ std::optional<Sign> lifted_adaptive(const LiftedRows& rows) {
         return static_cast<Sign>(expansion_sign(det_len, det));
     }
     return std::nullopt;
+}
+
+}  // namespace cavity::predicates::detail
+
+namespace cavity::predicates::detail {
+
+std::optional<Sign> lifted_small_integers(const LiftedRows& rows) {
+    const double* x = rows.x;
+    const double* y = rows.y;
+    const double* z = rows.z;
+    const double* w = rows.w;
+    double max = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        max = std::max({max, std::abs(x[i]), std::abs(y[i]), std::abs(z[i])});
+    }
+    if (max > 0x1p16) {
+        return std::nullopt;
+    }
+    // With differences of at most 2^16: the 2x2 minors are below 2^33 and the 3x3 minors below
+    // 2^51, exact in doubles; the lifts x^2 + y^2 + z^2 - dw (|dw| < 2^51 for weights below 2^50)
+    // are below 2^52, exact too; the four products lift * minor, below 2^103, and their sum are
+    // exact in 128-bit integers.
+    const double ab = x[0] * y[1] - x[1] * y[0];
+    const double bc = x[1] * y[2] - x[2] * y[1];
+    const double cd = x[2] * y[3] - x[3] * y[2];
+    const double da = x[3] * y[0] - x[0] * y[3];
+    const double ac = x[0] * y[2] - x[2] * y[0];
+    const double bd = x[1] * y[3] - x[3] * y[1];
+    const auto abc = static_cast<std::int64_t>(z[0] * bc - z[1] * ac + z[2] * ab);
+    const auto bcd = static_cast<std::int64_t>(z[1] * cd - z[2] * bd + z[3] * bc);
+    const auto cda = static_cast<std::int64_t>(z[2] * da + z[3] * ac + z[0] * cd);
+    const auto dab = static_cast<std::int64_t>(z[3] * ab + z[0] * bd + z[1] * da);
+    std::int64_t lift[4];
+    for (int i = 0; i < 4; ++i) {
+        lift[i] = static_cast<std::int64_t>(x[i] * x[i] + y[i] * y[i] + z[i] * z[i] - w[i]);
+    }
+    const Int128 det = (Int128{lift[3]} * abc - Int128{lift[2]} * dab) +
+                       (Int128{lift[1]} * cda - Int128{lift[0]} * bcd);
+    return sign_of(det);
 }
 
 }  // namespace cavity::predicates::detail

@@ -29,4 +29,8 @@ struct LiftedRows {
 /// by rounding them; none when neither holds. Requires inputs in kLiftedAdaptiveWindow.
 std::optional<Sign> lifted_adaptive(const LiftedRows& rows);
 
+/// The exact sign when the points are integers below 2^50 (checked by the caller; the rows are
+/// then exact differences) with coordinate differences of at most 2^16; none otherwise.
+std::optional<Sign> lifted_small_integers(const LiftedRows& rows);
+
 }  // namespace cavity::predicates::detail

@@ -7,6 +7,7 @@
 #include "cavity/predicates/detail/expansion.h"
 #include "exact_integer.h"
 #include "lifted_adaptive.h"
+#include "small_integers.h"
 #include "staged_pipeline.h"
 
 namespace cavity::predicates::detail {
@@ -36,8 +37,23 @@ Verdict orient4d_slow(const WeightedPoint3& a,
                       const WeightedPoint3& c,
                       const WeightedPoint3& d,
                       const WeightedPoint3& e) {
+    const std::array<WeightedPoint3, 5> query = {a, b, c, d, e};
+    if (is_small_integer(a) & is_small_integer(b) & is_small_integer(c) & is_small_integer(d) &
+        is_small_integer(e)) {
+        LiftedRows rows{};
+        for (int i = 0; i < 4; ++i) {
+            rows.x[i] = query[i].x - query[4].x;
+            rows.y[i] = query[i].y - query[4].y;
+            rows.z[i] = query[i].z - query[4].z;
+            rows.w[i] = query[i].w - query[4].w;
+        }
+        rows.differences_exact = true;
+        if (const std::optional<Sign> s = lifted_small_integers(rows)) {
+            return {*s, Stage::kAdaptive};
+        }
+    }
     return run_after_filter(
-        std::array<WeightedPoint3, 5>{a, b, c, d, e},
+        query,
         kLiftedAdaptiveWindow,
         [](const auto& p) { return orient4d_filter(p[0], p[1], p[2], p[3], p[4]); },
         orient4d_adaptive,

@@ -73,17 +73,15 @@ inline int insphere_filter(
         std::max(std::max(std::abs(aez), std::abs(bez)), std::max(std::abs(cez), std::abs(dez)));
     const double lo = std::min(std::min(maxx, maxy), maxz);
     const double m = std::max(std::max(maxx, maxy), maxz);
-    if (!(lo >= kInsphereMinMax && m <= kInsphereMaxMax)) {
+    const double eps = kInsphereErrorBound * maxx * maxy * maxz * (m * m);
+    // One well-predicted branch: the guards and the bound are combined without short-circuit
+    // (eps may be inf or 0 when a guard fails; the guard then decides), and the sign is computed
+    // without branching on the random sign of det.
+    const bool certified = (lo >= kInsphereMinMax) & (m <= kInsphereMaxMax) & (std::abs(det) > eps);
+    if (!certified) {
         return 0;
     }
-    const double eps = kInsphereErrorBound * maxx * maxy * maxz * (m * m);
-    if (det > eps) {
-        return 1;
-    }
-    if (det < -eps) {
-        return -1;
-    }
-    return 0;
+    return det > 0.0 ? 1 : -1;
 }
 
 }  // namespace cavity::predicates::detail

@@ -48,17 +48,16 @@ inline int orient3d_filter(const Point3& a, const Point3& b, const Point3& c, co
     const double maxz = std::max(std::max(std::abs(adz), std::abs(bdz)), std::abs(cdz));
     const double lo = std::min(std::min(maxx, maxy), maxz);
     const double hi = std::max(std::max(maxx, maxy), maxz);
-    if (!(lo >= kOrient3dMinMax && hi <= kOrient3dMaxMax)) {
+    const double eps = kOrient3dErrorBound * maxx * maxy * maxz;
+    // One well-predicted branch: the guards and the bound are combined without short-circuit
+    // (eps may be inf or 0 when a guard fails; the guard then decides), and the sign is computed
+    // without branching on the random sign of det.
+    const bool certified =
+        (lo >= kOrient3dMinMax) & (hi <= kOrient3dMaxMax) & (std::abs(det) > eps);
+    if (!certified) {
         return 0;
     }
-    const double eps = kOrient3dErrorBound * maxx * maxy * maxz;
-    if (det > eps) {
-        return 1;
-    }
-    if (det < -eps) {
-        return -1;
-    }
-    return 0;
+    return det > 0.0 ? 1 : -1;
 }
 
 }  // namespace cavity::predicates::detail

@@ -83,17 +83,16 @@ inline int orient4d_filter(const WeightedPoint3& a,
         std::max(std::max(std::abs(aew), std::abs(bew)), std::max(std::abs(cew), std::abs(dew)));
     const double lo = std::min(std::min(maxx, maxy), maxz);
     const double m = std::max(std::max(maxx, maxy), maxz);
-    if (!(lo >= kOrient4dMinMax && m <= kOrient4dMaxMax && maxw <= kOrient4dMaxWeight)) {
+    const double eps = kOrient4dErrorBound * maxx * maxy * maxz * std::max(m * m, maxw);
+    // One well-predicted branch: the guards and the bound are combined without short-circuit
+    // (eps may be inf or 0 when a guard fails; the guard then decides), and the sign is computed
+    // without branching on the random sign of det.
+    const bool certified = (lo >= kOrient4dMinMax) & (m <= kOrient4dMaxMax) &
+                           (maxw <= kOrient4dMaxWeight) & (std::abs(det) > eps);
+    if (!certified) {
         return 0;
     }
-    const double eps = kOrient4dErrorBound * maxx * maxy * maxz * std::max(m * m, maxw);
-    if (det > eps) {
-        return 1;
-    }
-    if (det < -eps) {
-        return -1;
-    }
-    return 0;
+    return det > 0.0 ? 1 : -1;
 }
 
 }  // namespace cavity::predicates::detail
