@@ -8,5 +8,7 @@ namespace cavity::cli {
 
 void add_sign_command(CLI::App& app);
 void add_generate_command(CLI::App& app);
+void add_triangulate_command(CLI::App& app);
+void add_check_command(CLI::App& app);
 
 }  // namespace cavity::cli

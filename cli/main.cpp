@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     cavity::cli::add_sign_command(app);
     cavity::cli::add_generate_command(app);
+    cavity::cli::add_triangulate_command(app);
+    cavity::cli::add_check_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -1,1 +1,12 @@
 # Storage, Bowyer–Watson insertion, point location, validation.
+target_sources(cavity_core PRIVATE
+  src/tet_pool.cpp
+  src/array_storage.cpp
+  src/face_hash_storage.cpp
+  src/facet_gluer.cpp
+  src/geometry.cpp
+  src/bootstrap.cpp
+  src/duplicates.cpp
+  src/triangulate.cpp
+  src/validate.cpp
+)

@@ -1,0 +1,62 @@
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "cavity/core/error.h"
+#include "cavity/core/mesh_io.h"
+#include "cavity/core/point_io.h"
+#include "cavity/core/validate.h"
+#include "commands.h"
+
+namespace cavity::cli {
+
+namespace {
+
+struct CheckArgs {
+    std::string points;
+    std::string mesh;
+    bool weighted = false;
+    bool quiet = false;
+};
+
+void run_check(const CheckArgs& args) {
+    const core::PointSet points = core::read_points(args.points, args.weighted);
+    const auto tets = core::read_ele(args.mesh, points.index_base);
+    const core::ValidationReport report = core::validate(points, tets);
+    if (!args.quiet) {
+        std::printf(
+            "%zu points: %zu vertices, %zu edges, %zu triangles (%zu on the hull), %zu tetrahedra; "
+            "%zu duplicate(s), %zu redundant\n",
+            points.size(), report.vertices, report.edges, report.triangles, report.hull_triangles,
+            report.tets, report.duplicates, report.redundant);
+    }
+    if (!report.ok()) {
+        std::string message = args.mesh + ": not the Delaunay triangulation of " + args.points +
+                              " (" + std::to_string(report.problem_count) + " problem(s)):";
+        for (const auto& p : report.problems) {
+            message += "\n  " + p;
+        }
+        throw core::Error(message);
+    }
+    if (!args.quiet) {
+        std::printf("valid: exact %sDelaunay triangulation under the symbolic perturbation\n",
+                    args.weighted ? "weighted " : "");
+    }
+}
+
+}  // namespace
+
+void add_check_command(CLI::App& app) {
+    auto args = std::make_shared<CheckArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "check",
+        "Exactly validate a tetrahedral mesh (TetGen .ele) as the Delaunay triangulation of a point "
+        "file; exit status 0 when valid, 1 otherwise");
+    cmd->add_option("points", args->points, "the points (.node, .xyz, .ply)")->required();
+    cmd->add_option("mesh", args->mesh, "the tetrahedra (.ele), numbered like the points")->required();
+    cmd->add_flag("--weighted", args->weighted, "weighted Delaunay (weights from the point file)");
+    cmd->add_flag("--quiet", args->quiet, "print only problems");
+    cmd->callback([args] { run_check(*args); });
+}
+
+}  // namespace cavity::cli

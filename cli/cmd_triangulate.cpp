@@ -1,0 +1,260 @@
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "cavity/core/atomic_file.h"
+#include "cavity/core/error.h"
+#include "cavity/core/insertion_order.h"
+#include "cavity/core/mesh_io.h"
+#include "cavity/core/point_io.h"
+#include "cavity/core/triangulate.h"
+#include "cavity/core/validate.h"
+#include "commands.h"
+#include "json_writer.h"
+#include "progress_bar.h"
+
+namespace cavity::cli {
+
+namespace {
+
+struct TriangulateArgs {
+    std::string input;
+    std::string prefix;
+    std::string order = "brio";
+    std::string locate = "walk";
+    std::string storage = "array";
+    std::string format = "tetgen";
+    std::string stats;
+    std::uint64_t seed = 0;
+    double brio_ratio = 0.5;
+    bool no_reverse_rounds = false;
+    bool weighted = false;
+    bool check = false;
+    bool quiet = false;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::uint64_t peak_rss_bytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<std::uint64_t>(usage.ru_maxrss) * 1024u;  // Linux reports KiB
+}
+
+void write_counters(JsonWriter& json, const core::Counters& c) {
+    json.begin_object("counters");
+    json.integer("insertions", c.insertions);
+    json.integer("tets_created", c.tets_created);
+    json.integer("tets_deleted", c.tets_deleted);
+    json.integer("ghosts_created", c.ghosts_created);
+    json.integer("ghosts_deleted", c.ghosts_deleted);
+    json.integer("max_cavity", c.max_cavity);
+    json.integer("dig_tests", c.dig_tests);
+    json.integer("walk_steps", c.walk_steps);
+    json.integer("walk_orient_calls", c.walk_orient_calls);
+    json.integer("points_redistributed", c.points_redistributed);
+    json.integer("redistribution_steps", c.redistribution_steps);
+    json.integer("perturbations", c.perturbations);
+    json.integer("perturbation_cofactors", c.perturbation_cofactors);
+    json.integer("hash_probes", c.hash_probes);
+    json.begin_object("predicate_stages");
+    constexpr const char* kKinds[] = {"orient3d", "insphere", "orient4d", "ghost"};
+    for (int k = 0; k < core::kPredicateKindCount; ++k) {
+        json.begin_object(kKinds[k]);
+        for (int s = 0; s < predicates::kStageCount; ++s) {
+            json.integer(predicates::stage_name(static_cast<predicates::Stage>(s)),
+                         c.stage_calls[static_cast<std::size_t>(k)][static_cast<std::size_t>(s)]);
+        }
+        json.end_object();
+    }
+    json.end_object();
+    json.end_object();
+}
+
+struct Timings {
+    double read_s = 0;
+    double order_s = 0;
+    double triangulate_s = 0;
+    double check_s = 0;
+    double write_s = 0;
+};
+
+void write_stats(const TriangulateArgs& args,
+                 const core::PointSet& points,
+                 const core::Triangulation& tri,
+                 const Timings& timings) {
+    JsonWriter json;
+    json.begin_object();
+    json.string("input", args.input);
+    json.integer("points", points.size());
+    json.string("weighted", args.weighted ? "yes" : "no");
+    json.string("order", args.order);
+    json.string("locate", args.locate);
+    json.string("storage", args.storage);
+    json.integer("seed", args.seed);
+    json.begin_object("timings");
+    json.number("read_s", timings.read_s);
+    json.number("order_s", timings.order_s);
+    json.number("triangulate_s", timings.triangulate_s);
+    json.number("check_s", timings.check_s);
+    json.number("write_s", timings.write_s);
+    json.end_object();
+    json.begin_object("counts");
+    json.integer("tets", tri.tets.size());
+    json.integer("hull_triangles", tri.hull_triangles);
+    json.integer("duplicates", tri.duplicates.size());
+    json.integer("redundant", tri.redundant.size());
+    json.end_object();
+    write_counters(json, tri.counters);
+    json.integer("storage_bytes", tri.storage_bytes);
+    json.integer("peak_rss_bytes", peak_rss_bytes());
+    json.begin_array("duplicates");
+    for (const auto& d : tri.duplicates) {
+        json.begin_array();
+        json.element(d[0] + static_cast<std::uint64_t>(points.index_base));
+        json.element(d[1] + static_cast<std::uint64_t>(points.index_base));
+        json.end_array();
+    }
+    json.end_array();
+    json.begin_array("redundant");
+    for (std::uint32_t r : tri.redundant) {
+        json.element(r + static_cast<std::uint64_t>(points.index_base));
+    }
+    json.end_array();
+    json.end_object();
+    core::AtomicFileGroup files;
+    files.add(args.stats).write(json.text());
+    files.commit();
+}
+
+/// Duplicates and redundant points are never dropped silently: a summary goes to stderr (the
+/// full lists to --stats).
+void report_skipped(const core::PointSet& points, const core::Triangulation& tri) {
+    const auto base = static_cast<std::uint64_t>(points.index_base);
+    if (!tri.duplicates.empty()) {
+        std::fprintf(stderr, "cavity: %zu duplicate point(s) skipped, each mapped to its first occurrence:",
+                     tri.duplicates.size());
+        for (std::size_t i = 0; i < tri.duplicates.size() && i < 10; ++i) {
+            std::fprintf(stderr, " %llu->%llu",
+                         static_cast<unsigned long long>(tri.duplicates[i][0] + base),
+                         static_cast<unsigned long long>(tri.duplicates[i][1] + base));
+        }
+        std::fprintf(stderr, "%s\n", tri.duplicates.size() > 10 ? " ..." : "");
+    }
+    if (!tri.redundant.empty()) {
+        std::fprintf(stderr, "cavity: %zu redundant (submerged) weighted point(s), not vertices:",
+                     tri.redundant.size());
+        for (std::size_t i = 0; i < tri.redundant.size() && i < 10; ++i) {
+            std::fprintf(stderr, " %llu", static_cast<unsigned long long>(tri.redundant[i] + base));
+        }
+        std::fprintf(stderr, "%s\n", tri.redundant.size() > 10 ? " ..." : "");
+    }
+}
+
+void run_triangulate(const TriangulateArgs& args) {
+    Timings timings;
+    auto clock = std::chrono::steady_clock::now();
+    const core::PointSet points = core::read_points(args.input, args.weighted);
+    timings.read_s = seconds_since(clock);
+
+    clock = std::chrono::steady_clock::now();
+    core::OrderOptions order_options;
+    order_options.kind = core::parse_order_kind(args.order);
+    order_options.seed = args.seed;
+    order_options.brio_ratio = args.brio_ratio;
+    order_options.reverse_alternate_rounds = !args.no_reverse_rounds;
+    const core::InsertionOrder order = core::make_insertion_order(points.points, order_options);
+    timings.order_s = seconds_since(clock);
+
+    core::TriangulateOptions options;
+    options.locate = core::parse_locate_kind(args.locate);
+    options.storage = core::parse_storage_kind(args.storage);
+    options.seed = args.seed;
+    options.count = !args.stats.empty();
+    ProgressBar bar("triangulating", !args.quiet);
+    options.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
+    clock = std::chrono::steady_clock::now();
+    const core::Triangulation tri = [&] {
+        try {
+            return core::triangulate(points, order.sequence, options);
+        } catch (const core::Error& e) {
+            throw core::Error(args.input + ": " + e.what());
+        }
+    }();
+    timings.triangulate_s = seconds_since(clock);
+    report_skipped(points, tri);
+
+    if (args.check) {
+        clock = std::chrono::steady_clock::now();
+        const core::ValidationReport report = core::validate(points, tri.tets);
+        timings.check_s = seconds_since(clock);
+        if (!report.ok()) {
+            std::string message = "validation failed (" + std::to_string(report.problem_count) +
+                                  " problem(s)); no mesh written:";
+            for (const auto& p : report.problems) {
+                message += "\n  " + p;
+            }
+            throw core::Error(message);
+        }
+    }
+
+    clock = std::chrono::steady_clock::now();
+    if (args.format == "vtu") {
+        core::write_vtu(args.prefix, points, tri.tets);
+    } else {
+        core::write_tetgen(args.prefix, points, tri.tets);
+    }
+    timings.write_s = seconds_since(clock);
+    if (!args.stats.empty()) {
+        write_stats(args, points, tri, timings);
+    }
+    if (!args.quiet) {
+        std::printf("%zu points -> %zu tetrahedra, %zu hull triangles%s in %.3f s (order %.3f s)\n",
+                    points.size(), tri.tets.size(), tri.hull_triangles, args.check ? ", valid," : "",
+                    timings.triangulate_s, timings.order_s);
+    }
+}
+
+}  // namespace
+
+void add_triangulate_command(CLI::App& app) {
+    auto args = std::make_shared<TriangulateArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "triangulate",
+        "Exact Delaunay (or weighted Delaunay) triangulation of a point file (.node, .xyz/.csv, "
+        ".ply); writes PREFIX.node and PREFIX.ele (TetGen) or PREFIX.vtu");
+    cmd->add_option("input", args->input, "input points")->required();
+    cmd->add_option("-o,--output", args->prefix, "output prefix")->required();
+    cmd->add_option("--order", args->order, "insertion order")
+        ->check(CLI::IsMember({"input", "random", "brio", "hilbert", "zorder"}))
+        ->capture_default_str();
+    cmd->add_option("--locate", args->locate, "point location")
+        ->check(CLI::IsMember({"walk", "conflict-graph"}))
+        ->capture_default_str();
+    cmd->add_option("--storage", args->storage, "tetrahedron storage")
+        ->check(CLI::IsMember({"array", "hash"}))
+        ->capture_default_str();
+    cmd->add_option("--seed", args->seed, "seed of the random choices (order, walk)")
+        ->capture_default_str();
+    cmd->add_option("--brio-ratio", args->brio_ratio, "BRIO: fraction of points in each later round")
+        ->capture_default_str();
+    cmd->add_flag("--no-reverse-rounds", args->no_reverse_rounds,
+                  "BRIO: do not reverse the curve order on alternate rounds");
+    cmd->add_flag("--weighted", args->weighted,
+                  "weighted Delaunay: the first .node attribute (or 4th column) is the weight");
+    cmd->add_flag("--check", args->check, "validate the result exactly before writing it");
+    cmd->add_option("--stats", args->stats,
+                    "write timings, counts and instrumentation counters as JSON");
+    cmd->add_flag("--quiet", args->quiet, "no progress bar or summary");
+    cmd->add_option("--format", args->format, "output format")
+        ->check(CLI::IsMember({"tetgen", "vtu"}))
+        ->capture_default_str();
+    cmd->callback([args] { run_triangulate(*args); });
+}
+
+}  // namespace cavity::cli

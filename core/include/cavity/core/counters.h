@@ -1,0 +1,52 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "cavity/predicates/stage.h"
+
+namespace cavity::core {
+
+/// The predicates the engine evaluates, for per-stage counts.
+enum class PredicateKind : std::uint8_t { kOrient3d = 0, kInsphere = 1, kOrient4d = 2, kGhost = 3 };
+
+inline constexpr int kPredicateKindCount = 4;
+
+/// Work done by one run, summed over insertions. Everything the chapter's analysis counts:
+/// tetrahedra created and deleted (Theorem 5.4), conflicts (Proposition 5.1-5.3 via Σ j), walk
+/// steps (§5.5), predicate calls by deciding stage and perturbation invocations.
+struct Counters {
+    std::uint64_t insertions = 0;
+    std::uint64_t tets_created = 0;
+    std::uint64_t tets_deleted = 0;
+    std::uint64_t ghosts_created = 0;
+    std::uint64_t ghosts_deleted = 0;
+    std::uint64_t max_cavity = 0;         ///< most tetrahedra deleted by one insertion
+    std::uint64_t dig_tests = 0;          ///< conflict tests in DigCavity3D
+    std::uint64_t walk_steps = 0;         ///< tetrahedra visited by walking point location
+    std::uint64_t walk_orient_calls = 0;  ///< orient3d calls made by the walk
+    std::uint64_t points_redistributed = 0;  ///< conflict graph: uninserted points moved to a new cell
+    std::uint64_t redistribution_steps = 0;  ///< conflict graph: cells visited while moving them
+    std::uint64_t duplicates = 0;
+    std::uint64_t redundant = 0;
+    std::uint64_t perturbations = 0;  ///< perturbed predicates that needed the tie-break
+    std::uint64_t perturbation_cofactors = 0;
+    std::uint64_t hash_probes = 0;
+    /// [predicate kind][stage]: calls decided at that stage.
+    std::array<std::array<std::uint64_t, predicates::kStageCount>, kPredicateKindCount> stage_calls{};
+
+    void count_predicate(PredicateKind kind, predicates::Stage stage) {
+        ++stage_calls[static_cast<std::size_t>(kind)][static_cast<std::size_t>(stage)];
+    }
+};
+
+/// What one insertion did, handed to observers after it completes.
+struct InsertionRecord {
+    std::uint32_t vertex;  ///< input index of the inserted point
+    std::uint64_t step;    ///< 0-based position in the insertion sequence
+    std::uint32_t created;
+    std::uint32_t deleted;
+    std::uint32_t walk_steps;
+};
+
+}  // namespace cavity::core

@@ -1,0 +1,34 @@
+#pragma once
+
+#include "cavity/core/counters.h"
+#include "cavity/core/tetrahedron.h"
+
+namespace cavity::core {
+
+/// The engine's instrumentation hooks. The engine is a template on its observer; with
+/// NullObserver every hook is an empty inline function and `kCounting` is false, so counting code
+/// is compiled out and the uninstrumented engine pays nothing. An observer that counts derives
+/// from CountingObserver; the experiments layer adds per-tetrahedron hooks (life-cycle logs) by
+/// overriding the hooks below in a derived class (they are called non-virtually, by name).
+struct NullObserver {
+    static constexpr bool kCounting = false;
+
+    Counters* counters() { return nullptr; }
+
+    void on_tet_created(TetId, const TetVertices&, std::uint64_t /*step*/) {}
+
+    void on_tet_deleted(TetId, std::uint64_t /*step*/) {}
+
+    void on_insertion(const InsertionRecord&) {}
+};
+
+/// Counts everything in Counters.
+struct CountingObserver : NullObserver {
+    static constexpr bool kCounting = true;
+
+    Counters* counters() { return &totals; }
+
+    Counters totals;
+};
+
+}  // namespace cavity::core

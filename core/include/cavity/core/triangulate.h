@@ -1,0 +1,54 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "cavity/core/counters.h"
+#include "cavity/core/point_set.h"
+
+namespace cavity::core {
+
+/// Point location (§5.4 conflict graph, §5.5 walking).
+enum class LocateKind { kWalk, kConflictGraph };
+/// Storage (§5.1 face hash table, or the compact array layout).
+enum class StorageKind { kArray, kHash };
+
+LocateKind parse_locate_kind(std::string_view name);    // "walk", "conflict-graph"; throws Error
+StorageKind parse_storage_kind(std::string_view name);  // "array", "hash"; throws Error
+
+struct TriangulateOptions {
+    LocateKind locate = LocateKind::kWalk;
+    StorageKind storage = StorageKind::kArray;
+    bool count = false;       ///< fill Triangulation::counters (instrumented engine)
+    std::uint64_t seed = 0;   ///< the walk's stochastic choices
+    /// Called now and then with (points processed, total); may be empty.
+    std::function<void(std::size_t, std::size_t)> progress;
+};
+
+/// A (weighted) Delaunay triangulation of a point set under the symbolic perturbation, in the
+/// input's own indices.
+struct Triangulation {
+    /// Solid tetrahedra as input indices (0-based), positively oriented.
+    std::vector<std::array<std::uint32_t, 4>> tets;
+    /// {point, its first occurrence}: exact repeats, not inserted.
+    std::vector<std::array<std::uint32_t, 2>> duplicates;
+    /// Weighted only: points that are not vertices because their lifted point lies above the lower
+    /// hull (submerged), in increasing order.
+    std::vector<std::uint32_t> redundant;
+    std::size_t hull_triangles = 0;
+    std::size_t storage_bytes = 0;  ///< capacity of the storage at the end
+    Counters counters;              ///< when TriangulateOptions::count
+};
+
+/// Triangulates `points` inserting them in `sequence` (a permutation of all input indices, e.g.
+/// from make_insertion_order). Throws Error when the points have no 3D triangulation (fewer than
+/// 4 distinct points, or all coplanar or collinear: the message names the affine dimension).
+Triangulation triangulate(const PointSet& points,
+                          std::span<const std::uint32_t> sequence,
+                          const TriangulateOptions& options);
+
+}  // namespace cavity::core

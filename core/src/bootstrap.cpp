@@ -1,0 +1,95 @@
+#include "cavity/core/bootstrap.h"
+
+#include <set>
+#include <string>
+#include <tuple>
+
+#include "cavity/core/error.h"
+#include "cavity/predicates/orient3d.h"
+
+namespace cavity::core {
+
+using predicates::Point3;
+using predicates::Sign;
+
+namespace {
+
+bool same_point(const Point3& a, const Point3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+// The 2D orientation of the projections onto one coordinate plane, through orient3d: with the
+// fourth point one unit above a plane holding the other three, orient3d is minus their 2D
+// orientation. Exact like orient3d, for every finite double.
+Sign orient2d_projected(const Point3& a, const Point3& b, const Point3& c, int drop) {
+    const auto project = [drop](const Point3& p) {
+        return drop == 0 ? Point3{p.y, p.z, 0.0} : drop == 1 ? Point3{p.z, p.x, 0.0} : Point3{p.x, p.y, 0.0};
+    };
+    return predicates::orient3d(project(a), project(b), project(c), Point3{0.0, 0.0, 1.0});
+}
+
+// Three distinct points are collinear exactly when all three coordinate projections are.
+bool collinear(const Point3& a, const Point3& b, const Point3& c) {
+    for (int drop = 0; drop < 3; ++drop) {
+        if (orient2d_projected(a, b, c, drop) != Sign::kZero) {
+            return false;
+        }
+    }
+    return true;
+}
+
+std::size_t count_distinct(std::span<const Point3> points) {
+    std::set<std::tuple<double, double, double>> seen;
+    for (const Point3& p : points) {
+        // +0.0 and -0.0 are the same point; adding 0.0 maps -0.0 to +0.0.
+        seen.emplace(p.x + 0.0, p.y + 0.0, p.z + 0.0);
+        if (seen.size() >= 4) {
+            break;
+        }
+    }
+    return seen.size();
+}
+
+[[noreturn]] void degenerate(std::span<const Point3> points, int dimension) {
+    const std::size_t distinct = count_distinct(points);
+    if (distinct < 4) {
+        throw Error("fewer than 4 distinct points (" + std::to_string(distinct) +
+                    "): no tetrahedron can be formed");
+    }
+    const char* what = dimension == 1 ? "collinear" : "coplanar";
+    throw Error("all points are " + std::string(what) + " (affine dimension " +
+                std::to_string(dimension) + "): no 3D triangulation exists");
+}
+
+}  // namespace
+
+std::array<std::size_t, 4> find_bootstrap(std::span<const Point3> points,
+                                          std::span<const std::uint32_t> sequence) {
+    const auto at = [&](std::size_t i) -> const Point3& { return points[sequence[i]]; };
+    const std::size_t n = sequence.size();
+    if (n == 0) {
+        throw Error("no points: no tetrahedron can be formed");
+    }
+    std::size_t i1 = 1;
+    while (i1 < n && same_point(at(i1), at(0))) {
+        ++i1;
+    }
+    if (i1 == n) {
+        degenerate(points, 0);
+    }
+    std::size_t i2 = i1 + 1;
+    while (i2 < n && collinear(at(0), at(i1), at(i2))) {
+        ++i2;
+    }
+    if (i2 >= n) {
+        degenerate(points, 1);
+    }
+    std::size_t i3 = i2 + 1;
+    while (i3 < n && predicates::orient3d(at(0), at(i1), at(i2), at(i3)) == Sign::kZero) {
+        ++i3;
+    }
+    if (i3 >= n) {
+        degenerate(points, 2);
+    }
+    return {0, i1, i2, i3};
+}
+
+}  // namespace cavity::core
