@@ -224,15 +224,19 @@ public:
         while (pos_ < data_.size() && std::strchr(" \t\r\n\v\f", data_[pos_]) == nullptr) {
             ++pos_;
         }
+        token_line_ = line_;
         return data_.substr(start, pos_ - start);
     }
 
-    std::size_t line() const { return line_; }
+    /// The line of the last token read (of the data's first line before any): where a value
+    /// was wrong, or where the data stopped short.
+    std::size_t line() const { return token_line_; }
 
 private:
     std::string_view data_;
     std::size_t pos_ = 0;
     std::size_t line_;
+    std::size_t token_line_ = line_;
 };
 
 /// Reads binary data in either byte order, independent of the host's.
