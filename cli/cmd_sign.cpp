@@ -268,8 +268,12 @@ void run_sign(const SignOptions& options) {
         std::size_t count = 0;
         for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
             if (count == arity) {
-                fail(std::string(name) + " expects " + std::to_string(arity) +
-                     " numbers, got more");
+                std::size_t total = count + 1;
+                while (!next_token(rest).empty()) {
+                    ++total;
+                }
+                fail(std::string(name) + " expects " + std::to_string(arity) + " numbers, got " +
+                     std::to_string(total));
             }
             const std::optional<double> value = parse_coordinate(token, error);
             if (!value) {
