@@ -1,5 +1,6 @@
 #include "symbolic_oracle.h"
 
+#include <bit>
 #include <cstddef>
 #include <map>
 #include <vector>
@@ -37,29 +38,27 @@ void add_product(Poly& sum, const Poly& a, const Poly& b, int sign) {
     }
 }
 
-/// Laplace expansion of the rows first_row.. over the columns in `columns`, along the first row.
-Poly determinant(const Matrix& m, std::size_t first_row, const std::vector<std::size_t>& columns) {
-    if (columns.size() == 1) {
-        return m[first_row][columns[0]];
-    }
-    Poly det;
-    for (std::size_t k = 0; k < columns.size(); ++k) {
-        std::vector<std::size_t> rest = columns;
-        rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(k));
-        add_product(det,
-                    m[first_row][columns[k]],
-                    determinant(m, first_row + 1, rest),
-                    k % 2 == 0 ? 1 : -1);
-    }
-    return det;
-}
-
+/// Laplace expansion along the first row, memoised on the set of columns left: the minor on the
+/// columns in `mask` uses the last popcount(mask) rows. The matrices here are at most 5x5.
 Poly determinant(const Matrix& m) {
-    std::vector<std::size_t> columns(m.size());
-    for (std::size_t c = 0; c < m.size(); ++c) {
-        columns[c] = c;
+    const std::size_t n = m.size();
+    std::vector<Poly> minors(std::size_t{1} << n);
+    for (std::size_t mask = 1; mask < minors.size(); ++mask) {
+        const std::size_t row = n - static_cast<std::size_t>(std::popcount(mask));
+        if (std::popcount(mask) == 1) {
+            minors[mask] = m[row][static_cast<std::size_t>(std::countr_zero(mask))];
+            continue;
+        }
+        int sign = 1;
+        for (std::size_t col = 0; col < n; ++col) {
+            if ((mask >> col & 1u) != 0) {
+                add_product(
+                    minors[mask], m[row][col], minors[mask & ~(std::size_t{1} << col)], sign);
+                sign = -sign;
+            }
+        }
     }
-    return determinant(m, 0, columns);
+    return minors.back();
 }
 
 Sign lowest_order_sign(const Poly& p) {

@@ -169,7 +169,7 @@ TEST(OuterHalfspaceSos, MatchesOracleOnAGridFace) {
     std::mt19937_64 rng(kSeed + 2);
     std::vector<Point3> plane;
     for (int s = 0; s < 4; ++s) {
-        for (int t = 0; t < 4; ++t) {
+        for (int t = 0; t < 3; ++t) {
             plane.push_back({double(s), 1, double(t)});
         }
     }
@@ -190,7 +190,7 @@ TEST(OuterHalfspaceWeightedSos, MatchesOracleOnCoplanarLifts) {
     plane.push_back({2, 0, 2});
     Tally tally;
     std::uniform_int_distribution<int> coefficient(-3, 3);
-    for (int round = 0; round < 8; ++round) {
+    for (int round = 0; round < 5; ++round) {
         std::vector<WeightedPoint3> lifted = on_hyperplane(
             plane, {coefficient(rng), coefficient(rng), coefficient(rng)}, coefficient(rng));
         if (round % 4 == 3) {
@@ -200,7 +200,7 @@ TEST(OuterHalfspaceWeightedSos, MatchesOracleOnCoplanarLifts) {
         ASSERT_NO_FATAL_FAILURE(
             compare_all_triangles(lifted, off_plane, {0, 1, -2, 5}, true, rng, tally));
     }
-    EXPECT_GT(tally.depths[1], 1000);
+    EXPECT_GT(tally.depths[1], 500);
     EXPECT_GT(tally.depths[2], 50);  // u on an edge line of vwx
 }
 
@@ -311,7 +311,7 @@ TEST(OuterHalfspaceSos, FlatHullFaceIsThePerturbedDelaunayTriangulation) {
     }
     std::mt19937_64 rng(kSeed + 4);
     std::vector<std::uint32_t> keys(face.size());
-    for (int round = 0; round < 60; ++round) {
+    for (int round = 0; round < 40; ++round) {
         const std::array<std::uint32_t, 9> drawn = distinct_keys<9>(rng, kKeyBound);
         std::copy(drawn.begin(), drawn.end(), keys.begin());
         const auto triangles = hull_triangles(face, keys, {1, 1, 1}, false);
@@ -339,7 +339,7 @@ TEST(OuterHalfspaceSos, FlatHullFaceIsThePerturbedDelaunayTriangulation) {
         }
         // y only orients the plane: another apex behind the face gives the same triangles.
         ASSERT_EQ(hull_triangles(face, keys, {0, 2, 0}, false), triangles);
-        if (round < 12) {
+        if (round < 6) {
             ASSERT_EQ(hull_triangles(face, keys, {1, 1, 1}, true), triangles);
         }
     }
