@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <climits>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 
 #include "cavity/predicates/point.h"
@@ -40,7 +42,7 @@ public:
         if (p.w != 0.0) {
             // |w| in [2^e, 2^(e+1)) lies in [2^(2h), 2^(2h+2)) for h = floor(e / 2): a weight is
             // in range exactly when a coordinate of exponent h would be.
-            const int e = std::ilogb(p.w);
+            const int e = exponent_of(p.w);
             include(e >= 0 ? e / 2 : -((1 - e) / 2));
         }
     }
@@ -62,8 +64,14 @@ public:
 private:
     void add_exponent(double v) {
         if (v != 0.0) {
-            include(std::ilogb(v));
+            include(exponent_of(v));
         }
+    }
+
+    /// std::ilogb of a nonzero v, read from the exponent field (a libm call only for subnormals).
+    static int exponent_of(double v) {
+        const int biased = static_cast<int>((std::bit_cast<std::uint64_t>(v) >> 52) & 0x7ff);
+        return biased != 0 ? biased - 1023 : std::ilogb(v);
     }
 
     void include(int e) {
