@@ -11,6 +11,7 @@
 
 #include "cavity/perturbation/sos.h"
 #include "cavity/predicates/insphere.h"
+#include "cavity/predicates/orient3d.h"
 #include "point_sets.h"
 #include "symbolic_oracle.h"
 
@@ -204,6 +205,55 @@ TEST(Orient4dSos, MatchesOracleWithCollinearWeightedPoints) {
     EXPECT_EQ(tally.ties, 1000);
     EXPECT_GT(tally.tie_signs[1], 0);  // five points with four on the line: nothing decides
     EXPECT_GT(tally.depths[3], 0);
+}
+
+/// Calls visit(i, j, k, l, m) for every 5-subset i < j < k < l < m of n points.
+template <class Visit>
+void for_each_5_subset(std::size_t n, Visit visit) {
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = i + 1; j < n; ++j) {
+            for (std::size_t k = j + 1; k < n; ++k) {
+                for (std::size_t l = k + 1; l < n; ++l) {
+                    for (std::size_t m = l + 1; m < n; ++m) {
+                        visit(std::array{i, j, k, l, m});
+                    }
+                }
+            }
+        }
+    }
+}
+
+// Every 5-subset of the 3x3x3 grid, unweighted and with all lifts on one hyperplane (so that
+// every power test ties): never zero on a non-flat tetrahedron, and the cascade never needs more
+// cofactors than the bounds derived in sos.cpp (two cospherical, three weighted).
+TEST(PerturbedLiftedSign, NeverZeroOnNonFlatTetrahedraOfTheGrid) {
+    std::mt19937_64 rng(kSeed + 9);
+    const std::vector<Point3> points = grid(-1, 1);
+    const std::vector<WeightedPoint3> lifted = on_hyperplane(points, {1, -1, 2}, 1);
+    int non_flat = 0;
+    std::array<int, 6> insphere_depths{};
+    std::array<int, 6> orient4d_depths{};
+    for_each_5_subset(points.size(), [&](const std::array<std::size_t, 5>& index) {
+        const Points5 p = pick(lifted, index);
+        if (predicates::orient3d(position(p[0]), position(p[1]), position(p[2]), position(p[3])) ==
+            Sign::kZero) {
+            return;
+        }
+        ++non_flat;
+        const Keys5 keys = distinct_keys<5>(rng, 1000);
+        const SosVerdict unweighted = insphere_of(p, keys);
+        const SosVerdict weighted = orient4d_of(p, keys);
+        EXPECT_NE(unweighted.sign, Sign::kZero) << describe(p, keys);
+        EXPECT_NE(weighted.sign, Sign::kZero) << describe(p, keys);
+        ++insphere_depths[unweighted.cofactors];
+        ++orient4d_depths[weighted.cofactors];
+    });
+    EXPECT_GT(non_flat, 50000);
+    EXPECT_GT(insphere_depths[2], 0);
+    EXPECT_EQ(insphere_depths[3] + insphere_depths[4] + insphere_depths[5], 0);
+    EXPECT_EQ(orient4d_depths[0], 0);
+    EXPECT_GT(orient4d_depths[3], 0);
+    EXPECT_EQ(orient4d_depths[4] + orient4d_depths[5], 0);
 }
 
 TEST(Orient4dSos, EqualWeightsGiveInsphereSos) {
