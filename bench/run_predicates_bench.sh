@@ -60,6 +60,10 @@ lines += [
     "(coplanar points; points on x²+y²+z² = 45², translated; weights putting the lifted points on one",
     "hyperplane); `near_degenerate` the same sets with 1-4 coordinates moved 1-4 ulps. `plain` is the",
     "same determinant in doubles without any error bound (not robust); `oracle` is cavity::oracle.",
+    "",
+    "Caveat: on the shared, loaded machine the few-ns rows vary by up to 2x between runs (orient3d",
+    "random has measured anywhere from 1.2x to 2.4x); a goal marked met here is met in this run only.",
+    "The near-degenerate rows have no goal: their non-integer inputs need expansions or GMP.",
 ]
 open(sys.argv[2], "w").write("\n".join(lines) + "\n")
 PY
