@@ -54,7 +54,10 @@ void add_generate_command(CLI::App& app) {
     generate->add_option("--weights",
                          options->weights,
                          "none (default), zero, equal:W or uniform:A:B (random in [A,B))");
-    generate->add_option("-o,--output", options->output, "Output file: .node (TetGen) or .xyz")
+    generate
+        ->add_option("-o,--output",
+                     options->output,
+                     "Output file: .node (TetGen, 0-based), .xyz, .txt or .csv")
         ->required();
     generate->footer(list +
                      "The same arguments give the same points on every platform. Coordinates are "

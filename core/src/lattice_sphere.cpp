@@ -1,6 +1,9 @@
 #include "lattice_sphere.h"
 
 #include <cmath>
+#include <string>
+
+#include "cavity/core/error.h"
 
 namespace cavity::core {
 
@@ -47,6 +50,11 @@ std::uint64_t least_radius_squared(std::size_t n, std::uint64_t bound) {
 }  // namespace
 
 LatticeSphere lattice_sphere(std::size_t n) {
+    if (n > kMaxLatticeSpherePoints) {
+        throw Error("cospherical: at most " + std::to_string(kMaxLatticeSpherePoints) +
+                    " points (the search for the radius grows like n^3); 'sphere' gives nearly "
+                    "cospherical sets of any size");
+    }
     std::uint64_t s = 0;
     for (std::uint64_t bound = 64; s == 0; bound *= 2) {
         s = least_radius_squared(n, bound);

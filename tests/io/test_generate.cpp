@@ -215,6 +215,7 @@ TEST(Generate, Weights) {
 TEST(Generate, BadArgumentsThrow) {
     EXPECT_THROW(generate_points("torus", 10, 0), Error);
     EXPECT_THROW(generate_points("cube", 0, 0), Error);
+    EXPECT_THROW(generate_points("cospherical", 30001, 0), Error);
     for (const char* spec : {"",
                              "one",
                              "equal:",

@@ -32,8 +32,8 @@ std::span<const Distribution> distributions();
 /// `paraboloid` k^2 with k = round(sqrt n). The result depends only on the arguments: the random
 /// streams are Random(seed) (positions) and Random(~seed) (weights), and every transform uses
 /// exactly rounded arithmetic, so the points are the same on every platform. index_base is 0.
-/// \throws Error for an unknown distribution, n = 0, n >= 2^32, or a `moment` curve whose t^3
-/// would not be an exact double.
+/// \throws Error for an unknown distribution, n = 0, n >= 2^32, a `moment` curve whose t^3
+/// would not be an exact double (n > 208064), or `cospherical` beyond 30000 points.
 PointSet generate_points(std::string_view distribution,
                          std::size_t n,
                          std::uint64_t seed,
