@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "cavity/perturbation/outer_halfspace.h"
+#include "cavity/perturbation/sos.h"
 #include "cavity/predicates/orient3d.h"
 #include "point_sets.h"
 #include "symbolic_oracle.h"
@@ -73,6 +74,27 @@ struct Tally {
     std::array<int, 4> depths{};  // indexed by the number of cofactors
 };
 
+/// For u in the plane of vwx, the ghost test and the solid tetrahedron x w v y behind it see the
+/// same degeneracy, and must agree whatever y's key: after a rigid motion (which keeps the lifted
+/// determinant) that puts the plane at z = 0, expanding the 5x5 lifted determinant of x, w, v, y,
+/// u along its z column leaves y's z times the 4x4 in-plane determinant, perturbation included.
+void expect_agrees_with_solid_tetrahedron(const GhostQuery& q, bool weighted, Sign ghost) {
+    for (const std::uint32_t y_key : {0u, 7u, 1000u}) {
+        const Keys5 keys = {q.keys[2], q.keys[1], q.keys[0], y_key, q.keys[3]};
+        if (std::count(keys.begin(), keys.end(), y_key) > 1) {
+            continue;
+        }
+        const Sign solid = weighted ? orient4d_sos(q.x, q.w, q.v, q.y, q.u, keys)
+                                    : insphere_sos(position(q.x),
+                                                   position(q.w),
+                                                   position(q.v),
+                                                   position(q.y),
+                                                   position(q.u),
+                                                   keys);
+        ASSERT_EQ(solid, ghost) << "y key " << y_key << "\n" << describe(q);
+    }
+}
+
 /// Checks one query against the oracle, the never-zero guarantee and the invariance under a
 /// cyclic rotation of the triangle.
 void expect_matches_oracle(const GhostQuery& q, bool weighted, Tally& tally) {
@@ -85,6 +107,10 @@ void expect_matches_oracle(const GhostQuery& q, bool weighted, Tally& tally) {
         << describe(rotated);
     ++tally.queries;
     ++tally.depths[verdict.cofactors];
+    if (symbolic_orient3d(position(q.v), position(q.w), position(q.x), position(q.u)) ==
+        Sign::kZero) {
+        ASSERT_NO_FATAL_FAILURE(expect_agrees_with_solid_tetrahedron(q, weighted, verdict.sign));
+    }
 }
 
 /// Runs every triangle of `plane` (with the apex y behind it) against every other point of
