@@ -32,6 +32,11 @@ using predicates::Verdict;
 /// so no three of them are collinear: every minor is nonzero and the first one decides. Weighted,
 /// u may lie on the line of an edge of vwx, zeroing one minor, but never on two such lines unless
 /// it is a vertex; M_4 = o(v, w, x) != 0, so at most two minors are evaluated.
+///
+/// Consistency: for u in the plane this is exactly insphere_sos / orient4d_sos(x, w, v, y, u)
+/// whatever y's key. After a rigid motion putting the plane at z = 0, the 5x5 lifted determinant
+/// expands along its z column to z_y times the in-plane D(eps), so the ghost and the solid
+/// tetrahedron behind vwx never disagree on a coplanar u.
 Resolution resolve_tie(const std::array<Point3, 4>& p, const Point3& y, const Keys4& keys) {
     std::uint8_t cofactors = 0;
     for (const std::uint8_t i : key_order(keys)) {
