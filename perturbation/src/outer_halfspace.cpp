@@ -35,8 +35,8 @@ using predicates::Verdict;
 ///
 /// Consistency: for u in the plane this is exactly insphere_sos / orient4d_sos(x, w, v, y, u)
 /// whatever y's key. After a rigid motion putting the plane at z = 0, the 5x5 lifted determinant
-/// expands along its z column to z_y times the in-plane D(eps), so the ghost and the solid
-/// tetrahedron behind vwx never disagree on a coplanar u.
+/// expands along its z column to a multiple of the in-plane D(eps) fixed by y, so the ghost and the
+/// solid tetrahedron behind vwx never disagree on a coplanar u.
 Resolution resolve_tie(const std::array<Point3, 4>& p, const Point3& y, const Keys4& keys) {
     std::uint8_t cofactors = 0;
     for (const std::uint8_t i : key_order(keys)) {
