@@ -1,7 +1,5 @@
 # Storage, Bowyer–Watson insertion, point location, validation.
 target_sources(cavity_core PRIVATE
-  src/tet_pool.cpp
-  src/array_storage.cpp
   src/face_hash_storage.cpp
   src/facet_gluer.cpp
   src/geometry.cpp

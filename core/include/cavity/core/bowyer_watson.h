@@ -48,10 +48,11 @@ public:
         if constexpr (Storage::kExplicitAdjacency) {
             // Ghost faces pair up around the ghost vertex exactly as new faces pair up around a
             // new vertex.
+            gluer_.begin(ghosts.size());
             for (TetId g : ghosts) {
                 glue_around(g, kGhostVertex);
             }
-            gluer_.clear();
+            gluer_.end();
         }
         storage_.end_operation();
     }
@@ -100,10 +101,11 @@ public:
             }
         }
         if constexpr (Storage::kExplicitAdjacency) {
+            gluer_.begin(created_.size());
             for (TetId t : created_) {
                 glue_around(t, u);
             }
-            gluer_.clear();
+            gluer_.end();
         }
         if (geometry_.weighted()) {
             collect_vanished(u);
@@ -201,17 +203,27 @@ private:
     /// Glues the faces of new tetrahedron t that pass through vertex apex to their partners.
     void glue_around(TetId t, VertexId apex) {
         const TetVertices& v = storage_.vertices(t);
+        const int a = static_cast<int>(std::find(v.begin(), v.end(), apex) - v.begin());
+        std::array<std::uint32_t, 4> local{};
+        if (gluer_.use_matrix()) {
+            for (int s = 0; s < 4; ++s) {
+                if (s != a) {
+                    local[static_cast<std::size_t>(s)] = gluer_.local(v[static_cast<std::size_t>(s)]);
+                }
+            }
+        }
         for (int s = 0; s < 4; ++s) {
-            if (v[static_cast<std::size_t>(s)] == apex) {
+            if (s == a) {
                 continue;
             }
-            auto tri = facet_vertices(v, s);
-            while (tri[0] != apex) {
-                tri = {tri[1], tri[2], tri[0]};
-            }
-            const HalfFacet partner = gluer_.match(tri[1], tri[2], half_facet(t, s));
+            const auto [i, j] = kApexFaceEdge[static_cast<std::size_t>(a)][static_cast<std::size_t>(s)];
+            const HalfFacet h = half_facet(t, s);
+            const HalfFacet partner =
+                gluer_.use_matrix()
+                    ? gluer_.match_local(local[static_cast<std::size_t>(i)], local[static_cast<std::size_t>(j)], h)
+                    : gluer_.match_hashed(v[static_cast<std::size_t>(i)], v[static_cast<std::size_t>(j)], h);
             if (partner != kNoHalfFacet) {
-                storage_.glue(half_facet(t, s), partner);
+                storage_.glue(h, partner);
             }
         }
     }

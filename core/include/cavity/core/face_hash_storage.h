@@ -14,7 +14,11 @@ namespace cavity::core {
 /// face w v u seen from the other side. Nothing is glued: a tetrahedron is adjacent to whatever
 /// holds the reversed face. Open addressing with linear probing and backward-shift deletion (no
 /// tombstones), load factor at most 1/2.
-class FaceHashStorage : public TetPool {
+struct HashRecord {
+    TetVertices v;
+};
+
+class FaceHashStorage : public TetPool<HashRecord> {
 public:
     static constexpr bool kExplicitAdjacency = false;
     static constexpr const char* kName = "hash";

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cavity/core/counters.h"
+#include "cavity/core/geometry.h"
 #include "cavity/core/tetrahedron.h"
 
 namespace cavity::core {
@@ -9,11 +10,16 @@ namespace cavity::core {
 /// NullObserver every hook is an empty inline function and `kCounting` is false, so counting code
 /// is compiled out and the uninstrumented engine pays nothing. An observer that counts derives
 /// from CountingObserver; the experiments layer adds per-tetrahedron hooks (life-cycle logs) by
-/// overriding the hooks below in a derived class (they are called non-virtually, by name).
+/// overriding the hooks below in a derived class (they are called non-virtually, by name, so the
+/// engine must be instantiated with the derived type: see triangulate_observed.h).
 struct NullObserver {
     static constexpr bool kCounting = false;
 
     Counters* counters() { return nullptr; }
+
+    /// Called once before the first insertion, with the engine's points: vertex ids in the other
+    /// hooks are insertion ranks, and geometry.key(v) is the input index of vertex v.
+    void on_start(const Geometry&) {}
 
     void on_tet_created(TetId, const TetVertices&, std::uint64_t /*step*/) {}
 

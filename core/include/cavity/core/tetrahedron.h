@@ -40,6 +40,26 @@ inline constexpr std::array<std::array<int, 3>, 4> kFacetVertices{{
     {0, 1, 2},
 }};
 
+/// kApexFaceEdge[a][s] = {i, j}: facet s of a tetrahedron, rotated to start at slot a (a != s), is
+/// (slot a, slot i, slot j). Around a new vertex in slot a, faces pair up across the edge (i, j).
+inline constexpr auto kApexFaceEdge = [] {
+    std::array<std::array<std::array<int, 2>, 4>, 4> table{};
+    for (std::size_t a = 0; a < 4; ++a) {
+        for (std::size_t s = 0; s < 4; ++s) {
+            if (a == s) {
+                continue;
+            }
+            const auto& tri = kFacetVertices[s];
+            std::size_t k = 0;
+            while (static_cast<std::size_t>(tri[k]) != a) {
+                ++k;
+            }
+            table[a][s] = {tri[(k + 1) % 3], tri[(k + 2) % 3]};
+        }
+    }
+    return table;
+}();
+
 constexpr HalfFacet half_facet(TetId t, int f) { return 4 * t + static_cast<HalfFacet>(f); }
 
 constexpr TetId tet_of(HalfFacet h) { return h >> 2; }
