@@ -1,5 +1,7 @@
 #include "cavity/core/bootstrap.h"
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 #include <string>
 #include <tuple>
@@ -48,6 +50,24 @@ std::size_t count_distinct(std::span<const Point3> points) {
     return seen.size();
 }
 
+// Halved differences cannot overflow; scaling each edge vector by its largest component makes the
+// shape measures below independent of the input's scale. Only used to prefer well-shaped
+// bootstrap tetrahedra: exactness comes from the predicates.
+Point3 direction(const Point3& from, const Point3& to) {
+    const Point3 d{to.x / 2 - from.x / 2, to.y / 2 - from.y / 2, to.z / 2 - from.z / 2};
+    const double m = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+    return m > 0 ? Point3{d.x / m, d.y / m, d.z / m} : d;
+}
+
+Point3 cross(const Point3& a, const Point3& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+double dot(const Point3& a, const Point3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+// How many candidates past the first valid one are weighed for shape.
+constexpr std::size_t kShapeCandidates = 64;
+
 [[noreturn]] void degenerate(std::span<const Point3> points, int dimension) {
     const std::size_t distinct = count_distinct(points);
     if (distinct < 4) {
@@ -75,16 +95,42 @@ std::array<std::size_t, 4> find_bootstrap(std::span<const Point3> points,
     if (i1 == n) {
         degenerate(points, 0);
     }
-    std::size_t i2 = i1 + 1;
-    while (i2 < n && collinear(at(0), at(i1), at(i2))) {
-        ++i2;
+    // The first point not collinear with the first two exists exactly when the input is not
+    // collinear; among it and the next few valid ones, take the widest triangle, and likewise for
+    // the fourth point, so that the bootstrap tetrahedron is not needlessly thin (the conflict
+    // graph needs a representable point strictly inside it).
+    const Point3 e1 = direction(at(0), at(i1));
+    std::size_t i2 = n;
+    double best = -1;
+    for (std::size_t i = i1 + 1, seen = 0; i < n && seen < kShapeCandidates; ++i) {
+        if (collinear(at(0), at(i1), at(i))) {
+            continue;
+        }
+        const Point3 c = cross(e1, direction(at(0), at(i)));
+        const double width = dot(c, c);
+        if (width > best) {
+            best = width;
+            i2 = i;
+        }
+        ++seen;
     }
     if (i2 >= n) {
         degenerate(points, 1);
     }
-    std::size_t i3 = i2 + 1;
-    while (i3 < n && predicates::orient3d(at(0), at(i1), at(i2), at(i3)) == Sign::kZero) {
-        ++i3;
+    const Point3 normal = cross(e1, direction(at(0), at(i2)));
+    std::size_t i3 = n;
+    best = -1;
+    for (std::size_t i = 1, seen = 0; i < n && seen < kShapeCandidates; ++i) {
+        if (i == i1 || i == i2 ||
+            predicates::orient3d(at(0), at(i1), at(i2), at(i)) == Sign::kZero) {
+            continue;
+        }
+        const double height = std::fabs(dot(normal, direction(at(0), at(i))));
+        if (height > best) {
+            best = height;
+            i3 = i;
+        }
+        ++seen;
     }
     if (i3 >= n) {
         degenerate(points, 2);

@@ -1,0 +1,66 @@
+// Inputs with no 3D triangulation get an Error naming why (the affine dimension).
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+#include <string>
+
+#include "cavity/core/error.h"
+#include "cavity/core/triangulate.h"
+
+namespace cavity::test {
+namespace {
+
+std::string error_of(const std::vector<predicates::Point3>& points) {
+    core::PointSet set;
+    set.points = points;
+    std::vector<std::uint32_t> sequence(points.size());
+    std::iota(sequence.begin(), sequence.end(), 0u);
+    try {
+        core::triangulate(set, sequence, core::TriangulateOptions{});
+    } catch (const core::Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(Errors, CoplanarNamesDimensionTwo) {
+    const std::vector<predicates::Point3> points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                                                 {1, 1, 0}, {2, 5, 0}, {0.1, 0.3, 0}};
+    EXPECT_NE(error_of(points).find("affine dimension 2"), std::string::npos) << error_of(points);
+}
+
+TEST(Errors, TiltedCoplanarNamesDimensionTwo) {
+    std::vector<predicates::Point3> points;
+    for (int i = 0; i < 5; ++i) {
+        for (int j = 0; j < 5; ++j) {
+            points.push_back({double(i), double(j), double(i + 2 * j)});  // the plane z = x + 2y
+        }
+    }
+    EXPECT_NE(error_of(points).find("affine dimension 2"), std::string::npos) << error_of(points);
+}
+
+TEST(Errors, CollinearNamesDimensionOne) {
+    std::vector<predicates::Point3> points;
+    for (int t = 0; t < 8; ++t) {
+        points.push_back({double(t), double(2 * t), double(3 * t)});
+    }
+    EXPECT_NE(error_of(points).find("affine dimension 1"), std::string::npos) << error_of(points);
+}
+
+TEST(Errors, FewerThanFourDistinctPoints) {
+    const std::vector<predicates::Point3> points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {-0.0, 0, 0}};
+    EXPECT_NE(error_of(points).find("fewer than 4 distinct points"), std::string::npos)
+        << error_of(points);
+    EXPECT_NE(error_of({}).find("no points"), std::string::npos);
+}
+
+TEST(Errors, SequenceMustCoverThePoints) {
+    core::PointSet set;
+    set.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const std::vector<std::uint32_t> sequence{0, 1, 2};
+    EXPECT_THROW(core::triangulate(set, sequence, core::TriangulateOptions{}), core::Error);
+}
+
+}  // namespace
+}  // namespace cavity::test
