@@ -247,7 +247,6 @@ void run_sign(const SignOptions& options) {
     std::array<double, kMaxArity> values{};
     std::string error;
     std::string_view line;
-    const auto fail = [&](const std::string& what) { reject_line(out, reader, what); };
     while (reader.next(line)) {
         std::string_view rest = line;
         const std::string_view name = next_token(rest);
@@ -261,8 +260,10 @@ void run_sign(const SignOptions& options) {
             }
         }
         if (kind == nullptr) {
-            fail("unknown predicate '" + std::string(name) +
-                 "' (expected orient3d, insphere or orient4d)");
+            reject_line(out,
+                        reader,
+                        "unknown predicate '" + std::string(name) +
+                            "' (expected orient3d, insphere or orient4d)");
         }
         const std::size_t arity = kind->arity;
         std::size_t count = 0;
@@ -272,18 +273,25 @@ void run_sign(const SignOptions& options) {
                 while (!next_token(rest).empty()) {
                     ++total;
                 }
-                fail(std::string(name) + " expects " + std::to_string(arity) + " numbers, got " +
-                     std::to_string(total));
+                reject_line(out,
+                            reader,
+                            std::string(name) + " expects " + std::to_string(arity) +
+                                " numbers, got " + std::to_string(total));
             }
             const std::optional<double> value = parse_coordinate(token, error);
             if (!value) {
-                fail(std::string(name) + " number " + std::to_string(count + 1) + ": " + error);
+                reject_line(
+                    out,
+                    reader,
+                    std::string(name) + " number " + std::to_string(count + 1) + ": " + error);
             }
             values[count++] = *value;
         }
         if (count != arity) {
-            fail(std::string(name) + " expects " + std::to_string(arity) + " numbers, got " +
-                 std::to_string(count));
+            reject_line(out,
+                        reader,
+                        std::string(name) + " expects " + std::to_string(arity) + " numbers, got " +
+                            std::to_string(count));
         }
         if (options.use_oracle) {
             out.append(sign_text(evaluate_oracle(kind->predicate, values.data())));

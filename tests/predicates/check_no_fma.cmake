@@ -2,7 +2,8 @@
 # for two operations and so break the error-free transformations and the filters' error bounds
 # (predicates.md §1.3). Run as: cmake -DOBJDUMP=... -DLIBRARY=... -P check_no_fma.cmake
 if(NOT OBJDUMP OR NOT EXISTS "${OBJDUMP}")
-  find_program(OBJDUMP objdump)
+  find_program(objdump_on_path objdump)
+  set(OBJDUMP "${objdump_on_path}")
 endif()
 if(NOT OBJDUMP)
   message("SKIPPED: objdump not found, cannot inspect ${LIBRARY}")
