@@ -1,0 +1,35 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "cavity/core/array_storage.h"
+#include "cavity/core/geometry.h"
+#include "cavity/core/point_set.h"
+
+namespace cavity::core {
+
+/// The array storage of a triangulation given as solid tetrahedra (positively oriented; vertex id =
+/// the given index), with a ghost tetrahedron over every boundary triangle and every facet glued:
+/// the live form that flips and vertex deletion work on. \throws Error when a triangle has more
+/// than two tetrahedra, or two on the same side.
+ArrayStorage complex_from_tets(std::span<const std::array<std::uint32_t, 4>> tets);
+
+/// The live solid tetrahedra, in slot order.
+std::vector<std::array<std::uint32_t, 4>> solid_tets(const ArrayStorage& storage);
+
+/// Checks the live complex exactly: adjacency is symmetric and each glued pair is one triangle
+/// seen with opposite orientations; every facet is glued; solid tetrahedra are positively
+/// oriented; ghosts hold the ghost vertex in slot 3 and the hull is locally convex (the apex behind
+/// every hull triangle and the third vertex of every neighbouring hull triangle are not in front of
+/// it). Returns the problems found (empty: valid).
+std::vector<std::string> check_complex(const ArrayStorage& storage, const Geometry& geometry);
+
+/// Geometry whose vertex ids are the input indices (key = index), for complexes built by
+/// complex_from_tets.
+Geometry geometry_by_index(const PointSet& points);
+
+}  // namespace cavity::core

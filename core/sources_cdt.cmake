@@ -1,0 +1,7 @@
+# Flips, gift-wrapping and vertex deletion (Cheng, Dey & Shewchuk §4.4, §5.6).
+target_sources(cavity_core PRIVATE
+  src/star.cpp
+  src/replace_tetrahedra.cpp
+  src/complex_from_tets.cpp
+  src/flips.cpp
+)
