@@ -1,0 +1,24 @@
+#pragma once
+
+#include "cavity/experiments/run.h"
+
+/// The measurements of each suite kind (one file each); execute_run dispatches to them.
+namespace cavity::experiments::measure {
+
+/// Triangulates with the counting engine: time, work counters, predicate stages, memory, the
+/// canonical hash of the output and (when the suite asks) exact validation.
+RunOutput triangulation(const Suite& suite, const RunSpec& run);
+std::vector<std::string> triangulation_columns();
+
+/// Exact f_j and F_j by the pencil sweep, with the closed form for skew lines.
+RunOutput jtets(const RunSpec& run);
+std::vector<std::string> jtets_columns();
+std::vector<std::string> jtets_j_columns();
+
+/// Many insertion orders of one point set: the life of every created tetrahedron checked
+/// against the creation rule, and created j-tetrahedra tallied against f_j (q_j estimates).
+RunOutput creation(const Suite& suite, const TierSettings& tier, const RunSpec& run);
+std::vector<std::string> creation_columns();
+std::vector<std::string> creation_j_columns();
+
+}  // namespace cavity::experiments::measure

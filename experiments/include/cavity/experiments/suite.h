@@ -1,0 +1,61 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+/// A suite: one question of the chapter, and the grid of runs that answers it.
+///
+/// Suite files are line based: `key value value ...`, `#` starts a comment, blank lines are
+/// ignored. Keys (each at most once):
+///   question  TEXT                      what the suite checks (required)
+///   kind      runs|jtets|creation|degenerate   (required)
+///   dist      NAME...                   generate_points distributions (required)
+///   n.quick   N...   n.full N...        sizes per tier (required)
+///   seeds.quick S... seeds.full S...    point (and order) seeds; `A..B` is a range (required)
+///   order     NAME...                   input random brio brio-noreverse hilbert zorder
+///                                       (default random)
+///   locate    walk|conflict-graph...    (default walk)
+///   storage   array|hash...             (default array)
+///   brio-ratio R                        (default 0.5)
+///   orders.quick R  orders.full R       creation: insertion orders per point set (default 100)
+///   validate  yes|no                    check every output exactly (default: yes for degenerate)
+/// Anything else is an Error naming the file and the line.
+namespace cavity::experiments {
+
+enum class SuiteKind { kRuns, kJTets, kCreation, kDegenerate };
+
+std::string_view suite_kind_name(SuiteKind kind);
+
+struct TierSettings {
+    std::vector<std::uint64_t> sizes;
+    std::vector<std::uint64_t> seeds;
+    std::uint64_t orders = 100;
+};
+
+struct Suite {
+    std::string name;  ///< file stem
+    std::string file;  ///< where it was read from, for messages
+    std::string question;
+    SuiteKind kind = SuiteKind::kRuns;
+    std::vector<std::string> distributions;
+    std::vector<std::string> orders{"random"};
+    std::vector<std::string> locators{"walk"};
+    std::vector<std::string> storages{"array"};
+    double brio_ratio = 0.5;
+    bool validate = false;
+    TierSettings quick;
+    TierSettings full;
+
+    const TierSettings& tier(std::string_view name) const;  ///< "quick" or "full"; throws Error
+};
+
+/// Parses suite text; `file` names it in error messages (file:line: what).
+Suite parse_suite(std::string_view text, const std::string& file, const std::string& name);
+
+/// Reads and parses a suite file. \throws Error naming the file (and line) on any problem.
+Suite read_suite(const std::filesystem::path& path);
+
+}  // namespace cavity::experiments

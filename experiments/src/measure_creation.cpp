@@ -1,0 +1,65 @@
+#include <algorithm>
+#include <chrono>
+
+#include "cavity/core/generate.h"
+#include "cavity/core/insertion_order.h"
+#include "cavity/core/triangulate_observed.h"
+#include "cavity/experiments/creation.h"
+#include "cavity/experiments/jtets.h"
+#include "cavity/experiments/measure.h"
+#include "format.h"
+
+namespace cavity::experiments::measure {
+
+using detail::number;
+
+std::vector<std::string> creation_columns() {
+    return {"points", "orders", "time_s", "created_mean", "created_solid_total", "rule_violations",
+            "sum_j_mean"};
+}
+
+std::vector<std::string> creation_j_columns() {
+    return {"j", "f_j", "created", "q_hat", "q_uniform", "j4_q_hat"};
+}
+
+RunOutput creation(const Suite& suite, const TierSettings& tier, const RunSpec& run) {
+    const core::PointSet points = core::generate_points(run.dist, run.n, run.seed);
+    const auto start = std::chrono::steady_clock::now();
+    const JTetCounts counts = count_jtets(points.points);
+    std::vector<std::uint64_t> created(counts.f.size(), 0);
+    std::uint64_t violations = 0;
+    std::uint64_t created_total = 0;
+    std::uint64_t sum_j = 0;
+    for (std::uint64_t r = 0; r < tier.orders; ++r) {
+        // Order seeds differ per repetition and from the point seed.
+        const core::InsertionOrder order = core::make_insertion_order(
+            points.points, detail::order_options(run.order, suite.brio_ratio, run.seed * 1000003 + r));
+        const CreationAudit audit = audit_creation(points, order.sequence);
+        violations += audit.violations;
+        for (const auto& [j, number_created] : audit.created_by_j) {
+            created[j] += number_created;
+            created_total += number_created;
+            sum_j += j * number_created;
+        }
+    }
+    const double time_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto orders = static_cast<double>(tier.orders);
+    RunOutput out;
+    for (std::size_t j = 0; j < counts.f.size(); ++j) {
+        if (counts.f[j] == 0) {
+            continue;
+        }
+        const double q_hat = static_cast<double>(created[j]) / (orders * static_cast<double>(counts.f[j]));
+        const double jj = static_cast<double>(j);
+        const double q_uniform = 24.0 / ((jj + 1) * (jj + 2) * (jj + 3) * (jj + 4));
+        out.j_rows.push_back({number(std::uint64_t{j}), number(counts.f[j]), number(created[j]),
+                              number(q_hat), number(q_uniform), number(q_hat * jj * jj * jj * jj)});
+    }
+    out.values = {number(std::uint64_t{points.size()}), number(tier.orders), number(time_s),
+                  number(static_cast<double>(created_total) / orders), number(created_total),
+                  number(violations), number(static_cast<double>(sum_j) / orders)};
+    return out;
+}
+
+}  // namespace cavity::experiments::measure

@@ -1,0 +1,136 @@
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <string>
+
+#include "cavity/core/error.h"
+#include "cavity/core/generate.h"
+#include "cavity/core/triangulate.h"
+#include "cavity/core/validate.h"
+#include "cavity/experiments/measure.h"
+#include "format.h"
+
+namespace cavity::experiments::measure {
+
+namespace {
+
+using detail::number;
+
+/// Resets the kernel's peak-RSS mark (VmHWM) so the next reading is this run's peak; returns
+/// false where /proc/self/clear_refs is not available.
+bool reset_peak_rss() {
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5";
+    return static_cast<bool>(clear);
+}
+
+/// VmHWM in bytes, or 0 when /proc is missing.
+std::uint64_t peak_rss_bytes() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line)) {
+        if (line.rfind("VmHWM:", 0) == 0) {
+            return std::stoull(line.substr(6)) * 1024;
+        }
+    }
+    return 0;
+}
+
+/// FNV-1a over the sorted list of sorted tetrahedra: equal for equal triangulations whatever
+/// the order in which they were built.
+std::uint64_t canonical_hash(std::vector<std::array<std::uint32_t, 4>> tets) {
+    for (auto& t : tets) {
+        std::sort(t.begin(), t.end());
+    }
+    std::sort(tets.begin(), tets.end());
+    std::uint64_t hash = 1469598103934665603ull;
+    for (const auto& t : tets) {
+        for (std::uint32_t v : t) {
+            for (int byte = 0; byte < 4; ++byte) {
+                hash ^= (v >> (8 * byte)) & 0xFFu;
+                hash *= 1099511628211ull;
+            }
+        }
+    }
+    return hash;
+}
+
+constexpr const char* kKindNames[] = {"orient3d", "insphere", "orient4d", "ghost"};
+
+}  // namespace
+
+std::vector<std::string> triangulation_columns() {
+    std::vector<std::string> columns{
+        "points", "vertices", "order_s", "time_s", "us_per_point", "tets", "hull_triangles",
+        "created", "deleted", "ghosts_created", "ghosts_deleted", "created_per_point",
+        "deleted_per_point", "max_cavity", "dig_tests", "walk_steps", "walk_steps_per_point",
+        "walk_orient_calls", "redistributed", "redistribution_steps", "perturbations",
+        "perturbation_cofactors", "hash_probes"};
+    for (const char* kind : kKindNames) {
+        for (int s = 0; s < predicates::kStageCount; ++s) {
+            columns.push_back(std::string(kind) + "_" +
+                              std::string(predicates::stage_name(static_cast<predicates::Stage>(s))));
+        }
+    }
+    for (const char* c : {"storage_bytes", "peak_rss_bytes", "valid", "hash"}) {
+        columns.emplace_back(c);
+    }
+    return columns;
+}
+
+RunOutput triangulation(const Suite& suite, const RunSpec& run) {
+    const core::PointSet points = core::generate_points(run.dist, run.n, run.seed);
+    using Clock = std::chrono::steady_clock;
+    const auto order_start = Clock::now();
+    const core::InsertionOrder order = core::make_insertion_order(
+        points.points, detail::order_options(run.order, suite.brio_ratio, run.seed));
+    const double order_s = std::chrono::duration<double>(Clock::now() - order_start).count();
+    core::TriangulateOptions options;
+    options.locate = core::parse_locate_kind(run.locate);
+    options.storage = core::parse_storage_kind(run.storage);
+    options.count = true;
+    options.seed = run.seed;
+    const bool peak_known = reset_peak_rss();
+    const auto start = Clock::now();
+    const core::Triangulation result = core::triangulate(points, order.sequence, options);
+    const double time_s = std::chrono::duration<double>(Clock::now() - start).count();
+    const std::uint64_t peak = peak_known ? peak_rss_bytes() : 0;
+    std::string valid = "-";
+    if (suite.validate) {
+        const core::ValidationReport report = core::validate(points, result.tets);
+        if (!report.ok()) {
+            throw core::Error(run.dist + " n=" + std::to_string(run.n) + " order " + run.order +
+                              ": invalid triangulation: " + report.problems.front());
+        }
+        valid = "1";
+    }
+    const core::Counters& c = result.counters;
+    const auto count = static_cast<double>(points.size());
+    const std::uint64_t vertices = points.size() - result.duplicates.size() - result.redundant.size();
+    RunOutput out;
+    out.values = {number(std::uint64_t{points.size()}), number(vertices), number(order_s),
+                  number(time_s), number(time_s * 1e6 / count), number(std::uint64_t{result.tets.size()}),
+                  number(std::uint64_t{result.hull_triangles}), number(c.tets_created),
+                  number(c.tets_deleted), number(c.ghosts_created), number(c.ghosts_deleted),
+                  number(static_cast<double>(c.tets_created) / count),
+                  number(static_cast<double>(c.tets_deleted) / count), number(c.max_cavity),
+                  number(c.dig_tests), number(c.walk_steps),
+                  number(static_cast<double>(c.walk_steps) / count), number(c.walk_orient_calls),
+                  number(c.points_redistributed), number(c.redistribution_steps),
+                  number(c.perturbations), number(c.perturbation_cofactors), number(c.hash_probes)};
+    for (const auto& kind : c.stage_calls) {
+        for (std::uint64_t calls : kind) {
+            out.values.push_back(number(calls));
+        }
+    }
+    char hash[20];
+    std::snprintf(hash, sizeof hash, "%016llx",
+                  static_cast<unsigned long long>(canonical_hash(result.tets)));
+    out.values.push_back(number(std::uint64_t{result.storage_bytes}));
+    out.values.push_back(number(peak));
+    out.values.push_back(valid);
+    out.values.push_back(hash);
+    return out;
+}
+
+}  // namespace cavity::experiments::measure

@@ -1,0 +1,82 @@
+#include "cavity/experiments/run.h"
+
+#include <cmath>
+
+#include "cavity/experiments/measure.h"
+
+namespace cavity::experiments {
+
+std::vector<std::string> key_columns() {
+    return {"dist", "n", "order", "locate", "storage", "seed"};
+}
+
+std::vector<std::string> key_values(const RunSpec& run) {
+    return {run.dist, std::to_string(run.n), run.order, run.locate, run.storage,
+            std::to_string(run.seed)};
+}
+
+std::vector<RunSpec> enumerate_runs(const Suite& suite, const TierSettings& tier) {
+    std::vector<RunSpec> runs;
+    const bool triangulates = suite.kind == SuiteKind::kRuns || suite.kind == SuiteKind::kDegenerate;
+    const std::vector<std::string> none{"-"};
+    const auto& orders = suite.kind == SuiteKind::kJTets ? none : suite.orders;
+    const auto& locators = triangulates ? suite.locators : none;
+    const auto& storages = triangulates ? suite.storages : none;
+    for (const std::string& dist : suite.distributions) {
+        for (std::uint64_t n : tier.sizes) {
+            for (std::uint64_t seed : tier.seeds) {
+                for (const std::string& order : orders) {
+                    for (const std::string& locate : locators) {
+                        for (const std::string& storage : storages) {
+                            runs.push_back({dist, n, order, locate, storage, seed});
+                        }
+                    }
+                }
+            }
+        }
+    }
+    return runs;
+}
+
+double run_cost(const Suite& suite, const TierSettings& tier, const RunSpec& run) {
+    const auto n = static_cast<double>(run.n);
+    switch (suite.kind) {
+        case SuiteKind::kJTets: return std::pow(n, 4) * 1e-3;
+        case SuiteKind::kCreation: return n * n * static_cast<double>(tier.orders);
+        case SuiteKind::kDegenerate: return n * 10;
+        case SuiteKind::kRuns: break;
+    }
+    return n * (suite.validate ? 10 : 1);
+}
+
+std::vector<std::string> metric_columns(SuiteKind kind) {
+    switch (kind) {
+        case SuiteKind::kJTets: return measure::jtets_columns();
+        case SuiteKind::kCreation: return measure::creation_columns();
+        case SuiteKind::kRuns:
+        case SuiteKind::kDegenerate: break;
+    }
+    return measure::triangulation_columns();
+}
+
+std::vector<std::string> j_columns(SuiteKind kind) {
+    switch (kind) {
+        case SuiteKind::kJTets: return measure::jtets_j_columns();
+        case SuiteKind::kCreation: return measure::creation_j_columns();
+        case SuiteKind::kRuns:
+        case SuiteKind::kDegenerate: break;
+    }
+    return {};
+}
+
+RunOutput execute_run(const Suite& suite, const TierSettings& tier, const RunSpec& run) {
+    switch (suite.kind) {
+        case SuiteKind::kJTets: return measure::jtets(run);
+        case SuiteKind::kCreation: return measure::creation(suite, tier, run);
+        case SuiteKind::kRuns:
+        case SuiteKind::kDegenerate: break;
+    }
+    return measure::triangulation(suite, run);
+}
+
+}  // namespace cavity::experiments

@@ -1,0 +1,253 @@
+#include "cavity/experiments/suite.h"
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "cavity/core/error.h"
+#include "cavity/core/generate.h"
+#include "cavity/core/insertion_order.h"
+#include "cavity/core/triangulate.h"
+
+namespace cavity::experiments {
+
+namespace {
+
+using core::Error;
+using core::located_message;
+
+std::vector<std::string> split_words(std::string_view line) {
+    std::vector<std::string> words;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) {
+            ++i;
+        }
+        const std::size_t start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') {
+            ++i;
+        }
+        if (i > start) {
+            words.emplace_back(line.substr(start, i - start));
+        }
+    }
+    return words;
+}
+
+/// Reads one line's values, turning every problem into an Error located at that line.
+class LineReader {
+public:
+    LineReader(const std::string& file, std::size_t line) : file_(file), line_(line) {}
+
+    [[noreturn]] void fail(const std::string& what) const {
+        throw Error(located_message(file_, line_, what));
+    }
+
+    std::uint64_t integer(const std::string& word) const {
+        std::uint64_t value = 0;
+        const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+        if (ec != std::errc{} || end != word.data() + word.size()) {
+            fail("'" + word + "' is not a non-negative integer");
+        }
+        return value;
+    }
+
+    /// Integers, where `A..B` stands for A, A+1, ..., B.
+    std::vector<std::uint64_t> integers(const std::vector<std::string>& words) const {
+        std::vector<std::uint64_t> values;
+        for (const std::string& word : words) {
+            const std::size_t dots = word.find("..");
+            if (dots == std::string::npos) {
+                values.push_back(integer(word));
+                continue;
+            }
+            const std::uint64_t first = integer(word.substr(0, dots));
+            const std::uint64_t last = integer(word.substr(dots + 2));
+            if (last < first || last - first > 100000) {
+                fail("bad range '" + word + "'");
+            }
+            for (std::uint64_t v = first; v <= last; ++v) {
+                values.push_back(v);
+            }
+        }
+        return values;
+    }
+
+    template <class Check>
+    std::vector<std::string> names(const std::vector<std::string>& words, Check check) const {
+        for (const std::string& word : words) {
+            try {
+                check(word);
+            } catch (const Error& e) {
+                fail(e.what());
+            }
+        }
+        return words;
+    }
+
+private:
+    const std::string& file_;
+    std::size_t line_;
+};
+
+SuiteKind parse_kind(const LineReader& reader, const std::string& word) {
+    constexpr SuiteKind kKinds[] = {SuiteKind::kRuns, SuiteKind::kJTets, SuiteKind::kCreation,
+                                    SuiteKind::kDegenerate};
+    for (SuiteKind kind : kKinds) {
+        if (word == suite_kind_name(kind)) {
+            return kind;
+        }
+    }
+    reader.fail("unknown kind '" + word + "' (runs, jtets, creation or degenerate)");
+}
+
+void check_distribution(const std::string& name) {
+    for (const core::Distribution& d : core::distributions()) {
+        if (d.name == name) {
+            return;
+        }
+    }
+    throw Error("unknown distribution '" + name + "'");
+}
+
+void check_order(const std::string& name) {
+    if (name != "brio-noreverse") {
+        core::parse_order_kind(name);
+    }
+}
+
+}  // namespace
+
+std::string_view suite_kind_name(SuiteKind kind) {
+    switch (kind) {
+        case SuiteKind::kRuns: return "runs";
+        case SuiteKind::kJTets: return "jtets";
+        case SuiteKind::kCreation: return "creation";
+        case SuiteKind::kDegenerate: return "degenerate";
+    }
+    return "runs";
+}
+
+const TierSettings& Suite::tier(std::string_view tier_name) const {
+    if (tier_name == "quick") {
+        return quick;
+    }
+    if (tier_name == "full") {
+        return full;
+    }
+    throw Error("unknown tier '" + std::string(tier_name) + "' (quick or full)");
+}
+
+Suite parse_suite(std::string_view text, const std::string& file, const std::string& name) {
+    Suite suite;
+    suite.name = name;
+    suite.file = file;
+    std::set<std::string> seen;
+    bool validate_given = false;
+    std::size_t line_number = 0;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) {
+            end = text.size();
+        }
+        ++line_number;
+        std::string_view line = text.substr(start, end - start);
+        start = end + 1;
+        if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) {
+            line = line.substr(0, hash);
+        }
+        std::vector<std::string> words = split_words(line);
+        if (words.empty()) {
+            continue;
+        }
+        const LineReader reader(file, line_number);
+        const std::string key = words.front();
+        words.erase(words.begin());
+        if (!seen.insert(key).second) {
+            reader.fail("key '" + key + "' given twice");
+        }
+        if (words.empty()) {
+            reader.fail("key '" + key + "' has no value");
+        }
+        const auto single = [&]() -> const std::string& {
+            if (words.size() != 1) {
+                reader.fail("key '" + key + "' takes one value");
+            }
+            return words.front();
+        };
+        if (key == "question") {
+            std::string joined;
+            for (const std::string& w : words) {
+                joined += (joined.empty() ? "" : " ") + w;
+            }
+            suite.question = joined;
+        } else if (key == "kind") {
+            suite.kind = parse_kind(reader, single());
+        } else if (key == "dist") {
+            suite.distributions = reader.names(words, check_distribution);
+        } else if (key == "order") {
+            suite.orders = reader.names(words, check_order);
+        } else if (key == "locate") {
+            suite.locators = reader.names(words, core::parse_locate_kind);
+        } else if (key == "storage") {
+            suite.storages = reader.names(words, core::parse_storage_kind);
+        } else if (key == "brio-ratio") {
+            const std::string& w = single();
+            char* stop = nullptr;
+            suite.brio_ratio = std::strtod(w.c_str(), &stop);
+            if (stop != w.c_str() + w.size() || !(suite.brio_ratio > 0 && suite.brio_ratio <= 1)) {
+                reader.fail("brio-ratio must be a number in (0, 1], not '" + w + "'");
+            }
+        } else if (key == "n.quick" || key == "n.full") {
+            (key == "n.quick" ? suite.quick : suite.full).sizes = reader.integers(words);
+        } else if (key == "seeds.quick" || key == "seeds.full") {
+            (key == "seeds.quick" ? suite.quick : suite.full).seeds = reader.integers(words);
+        } else if (key == "orders.quick" || key == "orders.full") {
+            const std::uint64_t r = reader.integer(single());
+            if (r == 0) {
+                reader.fail("orders must be positive");
+            }
+            (key == "orders.quick" ? suite.quick : suite.full).orders = r;
+        } else if (key == "validate") {
+            const std::string& w = single();
+            if (w != "yes" && w != "no") {
+                reader.fail("validate takes yes or no, not '" + w + "'");
+            }
+            suite.validate = w == "yes";
+            validate_given = true;
+        } else {
+            reader.fail("unknown key '" + key + "'");
+        }
+    }
+    for (const char* required : {"question", "kind", "dist", "n.quick", "n.full", "seeds.quick",
+                                 "seeds.full"}) {
+        if (seen.count(required) == 0) {
+            throw Error(located_message(file, std::nullopt,
+                                        std::string("missing key '") + required + "'"));
+        }
+    }
+    for (const TierSettings* t : {&suite.quick, &suite.full}) {
+        if (std::find(t->sizes.begin(), t->sizes.end(), 0u) != t->sizes.end()) {
+            throw Error(located_message(file, std::nullopt, "a size of 0 points"));
+        }
+    }
+    if (!validate_given) {
+        suite.validate = suite.kind == SuiteKind::kDegenerate;
+    }
+    return suite;
+}
+
+Suite read_suite(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw Error(located_message(path.string(), std::nullopt, "cannot open the suite file"));
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_suite(text.str(), path.string(), path.stem().string());
+}
+
+}  // namespace cavity::experiments
