@@ -4,4 +4,6 @@ target_sources(cavity_core PRIVATE
   src/replace_tetrahedra.cpp
   src/complex_from_tets.cpp
   src/flips.cpp
+  src/gift_wrap_engine.cpp
+  src/gift_wrap.cpp
 )
