@@ -38,15 +38,22 @@ SortedFacet sorted_facet(const std::array<std::uint32_t, 4>& tet, int f) {
 }  // namespace
 
 Adjacency build_adjacency(std::span<const std::array<std::uint32_t, 4>> tets,
-                          std::size_t point_count) {
+                          std::span<const std::uint32_t> rank) {
     const std::size_t m = tets.size();
+    const std::size_t point_count = rank.size();
     Adjacency out;
     out.neighbors.assign(4 * m, -1);
     out.vertex_to_simplex.assign(point_count, -1);
+    const auto ranked = [&](std::size_t t) {
+        const auto& v = tets[t];
+        return std::array<std::uint32_t, 4>{rank[v[0]], rank[v[1]], rank[v[2]], rank[v[3]]};
+    };
 
-    // Counting sort of the half-facets by their smallest vertex.
+    // Counting sort of the half-facets by their lowest-ranked vertex. Each entry carries its key
+    // (the two other ranks) so that pairing reads the buckets sequentially, never the tetrahedra.
     std::vector<std::uint32_t> begin(point_count + 1, 0);
-    for (const auto& tet : tets) {
+    for (std::size_t t = 0; t < m; ++t) {
+        const auto tet = ranked(t);
         for (int f = 0; f < 4; ++f) {
             ++begin[sorted_facet(tet, f).lowest + 1];
         }
@@ -54,25 +61,28 @@ Adjacency build_adjacency(std::span<const std::array<std::uint32_t, 4>> tets,
     for (std::size_t v = 0; v < point_count; ++v) {
         begin[v + 1] += begin[v];
     }
-    std::vector<std::uint32_t> bucketed(4 * m);
+    std::vector<std::uint64_t> keys(4 * m);
+    std::vector<std::uint32_t> halves(4 * m);
     {
         std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
         for (std::size_t t = 0; t < m; ++t) {
+            const auto tet = ranked(t);
             for (int f = 0; f < 4; ++f) {
-                bucketed[fill[sorted_facet(tets[t], f).lowest]++] =
-                    static_cast<std::uint32_t>(4 * t) + static_cast<std::uint32_t>(f);
+                const SortedFacet facet = sorted_facet(tet, f);
+                const std::uint32_t slot = fill[facet.lowest]++;
+                keys[slot] = facet.rest;
+                halves[slot] = static_cast<std::uint32_t>(4 * t) + static_cast<std::uint32_t>(f);
             }
         }
     }
 
-    // Inside a bucket (about 4 * 6.7 facets per vertex for uniform points), equal keys are the two
-    // sides of one triangle.
+    // Inside a bucket (about 27 half-facets for uniform points), equal keys are the two sides of
+    // one triangle.
     std::vector<std::pair<std::uint64_t, std::uint32_t>> bucket;
     for (std::size_t v = 0; v < point_count; ++v) {
         bucket.clear();
         for (std::uint32_t k = begin[v]; k < begin[v + 1]; ++k) {
-            const std::uint32_t h = bucketed[k];
-            bucket.emplace_back(sorted_facet(tets[h >> 2], static_cast<int>(h & 3u)).rest, h);
+            bucket.emplace_back(keys[k], halves[k]);
         }
         std::sort(bucket.begin(), bucket.end());
         for (std::size_t k = 0; k < bucket.size();) {
@@ -81,10 +91,11 @@ Adjacency build_adjacency(std::span<const std::array<std::uint32_t, 4>> tets,
                 ++same;
             }
             if (same - k > 2) {
-                throw core::Error("not a manifold: triangle (" + std::to_string(v) + ", " +
-                                  std::to_string(bucket[k].first >> 32) + ", " +
-                                  std::to_string(bucket[k].first & 0xFFFF'FFFFu) + ") has " +
-                                  std::to_string(same - k) + " tetrahedra");
+                const auto& tet = tets[bucket[k].second >> 2];
+                throw core::Error("not a manifold: a triangle of tetrahedron (" +
+                                  std::to_string(tet[0]) + ", " + std::to_string(tet[1]) + ", " +
+                                  std::to_string(tet[2]) + ", " + std::to_string(tet[3]) +
+                                  ") has " + std::to_string(same - k) + " tetrahedra");
             }
             if (same - k == 2) {
                 const std::uint32_t h0 = bucket[k].second;

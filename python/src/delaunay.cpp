@@ -62,7 +62,12 @@ Built build(const core::PointSet& input,
     b.triangulation = core::triangulate(input, order.sequence, options);
     b.triangulate_s = seconds_since(start);
     start = Clock::now();
-    b.adjacency = build_adjacency(b.triangulation.tets, input.size());
+    // Rank of each point along the insertion order (a space-filling curve, rounds aside).
+    std::vector<std::uint32_t> rank(input.size());
+    for (std::size_t r = 0; r < order.sequence.size(); ++r) {
+        rank[order.sequence[r]] = static_cast<std::uint32_t>(r);
+    }
+    b.adjacency = build_adjacency(b.triangulation.tets, rank);
     b.adjacency_s = seconds_since(start);
     return b;
 }
