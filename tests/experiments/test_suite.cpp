@@ -1,0 +1,78 @@
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cavity/core/error.h"
+#include "cavity/experiments/run.h"
+#include "cavity/experiments/suite.h"
+
+namespace cavity::experiments {
+namespace {
+
+constexpr const char* kGood = R"(# a comment
+question  does it parse?
+kind      runs
+dist      cube ball     # trailing comment
+n.quick   100 200
+n.full    1000
+seeds.quick 1..3
+seeds.full  1
+order     random brio-noreverse
+locate    walk conflict-graph
+)";
+
+TEST(Suite, ParsesEveryKey) {
+    const Suite suite = parse_suite(kGood, "good.suite", "good");
+    EXPECT_EQ(suite.question, "does it parse?");
+    EXPECT_EQ(suite.kind, SuiteKind::kRuns);
+    EXPECT_EQ(suite.distributions, (std::vector<std::string>{"cube", "ball"}));
+    EXPECT_EQ(suite.quick.seeds, (std::vector<std::uint64_t>{1, 2, 3}));
+    EXPECT_EQ(suite.full.sizes, (std::vector<std::uint64_t>{1000}));
+    EXPECT_EQ(suite.storages, (std::vector<std::string>{"array"}));
+    EXPECT_FALSE(suite.validate);
+    // 2 dists x 2 sizes x 3 seeds x 2 orders x 2 locators.
+    EXPECT_EQ(enumerate_runs(suite, suite.quick).size(), 48u);
+}
+
+/// The message of the Error that parsing `text` throws ("" when it does not throw).
+std::string error_of(const std::string& text) {
+    try {
+        parse_suite(text, "bad.suite", "bad");
+    } catch (const core::Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(Suite, MalformedLinesAreNamedByFileAndLine) {
+    const std::string head = "question q\nkind runs\n";
+    const std::string rest = "n.quick 10\nn.full 10\nseeds.quick 1\nseeds.full 1\n";
+    EXPECT_NE(error_of(head + "dist cube\nsizes 10\n" + rest).find("bad.suite:4: unknown key 'sizes'"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "dist cube\n" + "n.quick 10 ten\nn.full 10\nseeds.quick 1\nseeds.full 1\n")
+                  .find("bad.suite:4: 'ten' is not a non-negative integer"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "dist cube nowhere\n" + rest).find("bad.suite:3: unknown distribution"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "dist cube\norder sideways\n" + rest).find("bad.suite:4:"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "dist cube\nkind jtets\n" + rest).find("bad.suite:4: key 'kind' given twice"),
+              std::string::npos);
+    EXPECT_NE(error_of("question q\nkind sometimes\n").find("bad.suite:2: unknown kind"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "dist cube\nseeds.quick 5..2\n").find("bad.suite:4: bad range"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "dist cube\n").find("bad.suite: missing key 'n.quick'"),
+              std::string::npos);
+    EXPECT_EQ(error_of(head + "dist cube\n" + rest), "");
+}
+
+TEST(Suite, ShippedSuitesParse) {
+    for (const char* name : {"jtets", "creation", "scaling", "walk", "adversarial", "degenerate"}) {
+        const std::string path = std::string(CAVITY_SUITES_DIR) + "/" + name + ".suite";
+        EXPECT_NO_THROW(read_suite(path)) << path;
+    }
+}
+
+}  // namespace
+}  // namespace cavity::experiments
