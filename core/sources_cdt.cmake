@@ -6,4 +6,5 @@ target_sources(cavity_core PRIVATE
   src/flips.cpp
   src/gift_wrap_engine.cpp
   src/gift_wrap.cpp
+  src/vertex_deletion.cpp
 )

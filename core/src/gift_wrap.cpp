@@ -125,7 +125,7 @@ GiftWrapResult gift_wrap_delaunay(const PointSet& points) {
 
     detail::GiftWrapEngine engine(geometry, candidates, false, out.counters);
     for (int f = 0; f < 4; ++f) {
-        engine.offer(facet_vertices(seed, f));
+        engine.offer(facet_vertices(seed, f), seed[static_cast<std::size_t>(f)]);
     }
     engine.run();
     out.tets.push_back({seed[0], seed[1], seed[2], seed[3]});
@@ -151,15 +151,15 @@ GiftWrapResult gift_wrap_delaunay(const PointSet& points) {
 }
 
 std::vector<TetVertices> gift_wrap_cavity(const Geometry& geometry,
-                                          std::span<const std::array<VertexId, 3>> boundary,
+                                          std::span<const TetVertices> boundary,
                                           std::span<const VertexId> candidates,
                                           bool ghost_allowed,
                                           RetriangulationCounters* counters) {
     RetriangulationCounters local;
     detail::GiftWrapEngine engine(geometry, candidates, ghost_allowed,
                                   counters != nullptr ? *counters : local);
-    for (const auto& f : boundary) {
-        engine.offer(f);
+    for (const TetVertices& t : boundary) {
+        engine.offer(facet_vertices(t, 3), t[3]);
     }
     engine.run();
     if (engine.hull_triangles() != 0) {

@@ -32,17 +32,42 @@ bool collinear(const Point3& a, const Point3& b, const Point3& c) {
            flat([](const Point3& p) { return Point3{p.z, p.x, 0}; });
 }
 
+/// For c and z coplanar with a and b: true when they lie on the same side of line ab (some
+/// coordinate-plane projection of the plane is non-degenerate and sees them on the same side).
+bool same_side_of_line(const Point3& a, const Point3& b, const Point3& c, const Point3& z) {
+    const Point3 up{0, 0, 1};
+    const auto side = [&](auto project, const Point3& p) {
+        return predicates::orient3d(project(a), project(b), project(p), up);
+    };
+    const auto test = [&](auto project) -> int {
+        const Sign sc = side(project, c);
+        const Sign sz = side(project, z);
+        if (sc == Sign::kZero && sz == Sign::kZero) {
+            return -1;  // this projection cannot tell
+        }
+        return sc == sz ? 1 : 0;
+    };
+    for (int r : {test([](const Point3& p) { return Point3{p.x, p.y, 0}; }),
+                  test([](const Point3& p) { return Point3{p.y, p.z, 0}; }),
+                  test([](const Point3& p) { return Point3{p.z, p.x, 0}; })}) {
+        if (r >= 0) {
+            return r == 1;
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
-void GiftWrapEngine::offer(const Triangle& seen_from_finished_side) {
+void GiftWrapEngine::offer(const Triangle& seen_from_finished_side, VertexId apex) {
     const Triangle key = sorted(seen_from_finished_side);
     const auto it = unfinished_.find(key);
     if (it == unfinished_.end()) {
-        unfinished_.emplace(key, seen_from_finished_side);
+        unfinished_.emplace(key, Unfinished{seen_from_finished_side, apex});
         stack_.push_back(key);
         return;
     }
-    const Triangle& other = it->second;
+    const Triangle& other = it->second.seen;
     const Triangle& mine = seen_from_finished_side;
     const bool opposite = other == Triangle{mine[1], mine[0], mine[2]} ||
                           other == Triangle{mine[0], mine[2], mine[1]} ||
@@ -112,7 +137,7 @@ bool GiftWrapEngine::in_outer_halfspace(const TetVertices& ghost, VertexId u) {
                geometry_.weighted_point(u), keys) == Sign::kPos;
 }
 
-VertexId GiftWrapEngine::ghost_apex(const TetVertices& partial) {
+VertexId GiftWrapEngine::ghost_apex(const TetVertices& partial, VertexId behind_apex) {
     // partial = (f1, f0, f2, -) holds the ghost among its first three slots: the new tetrahedron
     // is a ghost over a new hull triangle through the finite edge of f. The apex is the candidate
     // with no other candidate in the outer halfspace of its hull triangle: the hull wrapped
@@ -120,16 +145,26 @@ VertexId GiftWrapEngine::ghost_apex(const TetVertices& partial) {
     const int g = partial[0] == kGhostVertex ? 0 : partial[1] == kGhostVertex ? 1 : 2;
     const Point3& a = geometry_.point(partial[static_cast<std::size_t>(g == 0 ? 1 : 0)]);
     const Point3& b = geometry_.point(partial[static_cast<std::size_t>(g == 2 ? 1 : 2)]);
+    // Every candidate lies in the wedge between the finished hull triangle (a, b, z) behind
+    // this facet and the hull's other side, so the outer-halfspace order is total there, except
+    // on the wedge's own boundary: a candidate in the half-plane of (a, b, z) would fold the new
+    // hull triangle back onto the finished one, and is skipped.
+    const Point3 z = behind_apex != kNoVertex ? geometry_.point(behind_apex) : a;
     VertexId best = kNoVertex;
     TetVertices best_tet{};
     for (VertexId c : candidates_) {
-        if (c == partial[0] || c == partial[1] || c == partial[2] ||
+        if (c == partial[0] || c == partial[1] || c == partial[2] || c == behind_apex ||
             collinear(a, b, geometry_.point(c))) {
             continue;
         }
         TetVertices t = partial;
         t[3] = c;
         t = rotate_to_last(t, g);
+        if (behind_apex != kNoVertex &&
+            geometry_.orient3d(t[0], t[1], t[2], behind_apex, nullptr) == Sign::kZero &&
+            same_side_of_line(a, b, geometry_.point(c), z)) {
+            continue;
+        }
         if (best == kNoVertex || in_outer_halfspace(best_tet, c)) {
             best = c;
             best_tet = t;
@@ -146,7 +181,8 @@ void GiftWrapEngine::run() {
         if (it == unfinished_.end()) {
             continue;  // finished from its other side meanwhile
         }
-        const Triangle f = it->second;
+        const Triangle f = it->second.seen;
+        const VertexId behind = it->second.apex;
         unfinished_.erase(it);
         ++counters_.facets_wrapped;
         TetVertices t{f[1], f[0], f[2], kNoVertex};
@@ -161,7 +197,7 @@ void GiftWrapEngine::run() {
                 t[3] = kGhostVertex;
             }
         } else {
-            const VertexId c = ghost_apex(t);
+            const VertexId c = ghost_apex(t, behind);
             if (c == kNoVertex) {
                 throw Error("gift-wrapping failed: no vertex to close hull edge facet " +
                             name(f[0]) + " " + name(f[1]) + " " + name(f[2]));
@@ -174,7 +210,7 @@ void GiftWrapEngine::run() {
         for (int k = 0; k < 4; ++k) {
             const Triangle side = facet_vertices(t, k);
             if (sorted(side) != key) {
-                offer(side);
+                offer(side, t[static_cast<std::size_t>(k)]);
             }
         }
     }

@@ -28,8 +28,9 @@ public:
         , counters_(counters) {}
 
     /// Enters a facet as unfinished, or finishes it when its other side is already unfinished.
+    /// `apex` is the fourth vertex of the finished tetrahedron (kNoVertex if unknown).
     /// \throws Error when the same side is entered twice (the tetrahedra would overlap).
-    void offer(const Triangle& seen_from_finished_side);
+    void offer(const Triangle& seen_from_finished_side, VertexId apex);
 
     /// Builds tetrahedra until no facet is unfinished. A finite facet with no candidate in front
     /// is a hull triangle: closed by a ghost tetrahedron when ghosts are allowed, else counted.
@@ -49,14 +50,19 @@ private:
     };
 
     VertexId solid_apex(const Triangle& f);
-    VertexId ghost_apex(const TetVertices& partial);
+    VertexId ghost_apex(const TetVertices& partial, VertexId behind_apex);
     bool in_outer_halfspace(const TetVertices& ghost, VertexId u);
 
     const Geometry& geometry_;
     std::span<const VertexId> candidates_;
     bool ghost_allowed_;
     RetriangulationCounters& counters_;
-    std::unordered_map<Triangle, Triangle, TriangleHash> unfinished_;  // sorted key -> oriented
+    struct Unfinished {
+        Triangle seen;  // oriented, from the finished side
+        VertexId apex;  // of the finished tetrahedron
+    };
+
+    std::unordered_map<Triangle, Unfinished, TriangleHash> unfinished_;  // sorted key -> facet
     std::vector<Triangle> stack_;
     std::vector<TetVertices> tets_;
     std::size_t hull_triangles_ = 0;

@@ -35,16 +35,16 @@ struct GiftWrapResult {
 /// O(n h) in all. \throws Error for fewer than 4 distinct or affinely dependent points.
 GiftWrapResult gift_wrap_delaunay(const PointSet& points);
 
-/// Retriangulates a cavity by gift-wrapping: `boundary` lists the cavity's boundary triangles as
-/// seen from the tetrahedra outside it (the outside on each triangle's positive side, i.e. each
-/// triangle reversed from the cavity's point of view), possibly with the ghost vertex; apices are
+/// Retriangulates a cavity by gift-wrapping: `boundary` lists the tetrahedra just outside the
+/// cavity, each positively oriented with its facet 3 on the cavity's boundary (so its slot 3 is
+/// the apex on that triangle's outer side), possibly with the ghost vertex; apices are
 /// chosen among `candidates` (vertex ids of `geometry`), and the ghost vertex, when
 /// `ghost_allowed`, closes facets with no candidate in front (new hull triangles). The cavity must
 /// be fillable by the Delaunay tetrahedra of its vertices, e.g. the star of a deleted vertex.
 /// Returns the new tetrahedra (positively oriented, ghost in slot 3).
 /// \throws Error when a facet cannot be finished or the tetrahedra do not close up.
 std::vector<TetVertices> gift_wrap_cavity(const Geometry& geometry,
-                                          std::span<const std::array<VertexId, 3>> boundary,
+                                          std::span<const TetVertices> boundary,
                                           std::span<const VertexId> candidates,
                                           bool ghost_allowed,
                                           RetriangulationCounters* counters);

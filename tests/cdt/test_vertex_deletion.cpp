@@ -1,0 +1,184 @@
+// Vertex deletion by gift-wrapping the star: after every deletion the complex equals the
+// triangulation rebuilt by Bowyer-Watson without the deleted points, on random and degenerate
+// sets, hull vertices included.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+#include "cavity/core/complex_from_tets.h"
+#include "cavity/core/error.h"
+#include "cavity/core/generate.h"
+#include "cavity/core/random.h"
+#include "cavity/core/star.h"
+#include "cavity/core/triangulate.h"
+#include "cavity/core/vertex_deletion.h"
+
+namespace cavity::core {
+namespace {
+
+using Tets = std::vector<std::array<std::uint32_t, 4>>;
+
+Tets canonical(Tets tets) {
+    for (auto& t : tets) {
+        std::sort(t.begin(), t.end());
+    }
+    std::sort(tets.begin(), tets.end());
+    return tets;
+}
+
+Triangulation bowyer_watson(const PointSet& ps) {
+    std::vector<std::uint32_t> seq(ps.size());
+    std::iota(seq.begin(), seq.end(), 0u);
+    return triangulate(ps, seq, {});
+}
+
+/// Bowyer-Watson on the points not deleted, mapped back to the original indices. Dropping points
+/// keeps the relative order of the others' keys, so the perturbation decides the same way.
+Triangulation rebuilt_without(const PointSet& ps, const std::vector<bool>& gone) {
+    PointSet kept;
+    std::vector<std::uint32_t> original;
+    for (std::uint32_t i = 0; i < ps.size(); ++i) {
+        if (!gone[i]) {
+            original.push_back(i);
+            kept.points.push_back(ps.points[i]);
+            if (ps.weighted()) {
+                kept.weights.push_back(ps.weights[i]);
+            }
+        }
+    }
+    Triangulation t = bowyer_watson(kept);
+    for (auto& tet : t.tets) {
+        for (auto& v : tet) {
+            v = original[v];
+        }
+    }
+    for (auto& r : t.redundant) {
+        r = original[r];
+    }
+    return t;
+}
+
+/// Deletes `count` vertices one by one from the live complex (every third one a hull vertex),
+/// comparing with the rebuilt triangulation after each. Counts in `resurfaced` the submerged
+/// (weighted redundant) points that became vertices.
+void delete_and_compare(const PointSet& ps, int count, std::uint64_t seed, std::size_t& resurfaced) {
+    const Triangulation full = bowyer_watson(ps);
+    const Geometry geometry = geometry_by_index(ps);
+    ArrayStorage storage = complex_from_tets(full.tets);
+    std::vector<VertexId> submerged(full.redundant.begin(), full.redundant.end());
+    std::vector<bool> gone(ps.size(), false);
+    Random random(seed);
+    RetriangulationCounters counters;
+    int hull_deletions = 0;
+    for (int k = 0; k < count; ++k) {
+        std::vector<VertexId> pool;
+        const bool hull = k % 3 == 0;
+        for (TetId t = 0; t < storage.capacity(); ++t) {
+            if (storage.alive(t) && is_ghost(storage.vertices(t)) == hull) {
+                for (VertexId v : storage.vertices(t)) {
+                    if (v != kGhostVertex) {
+                        pool.push_back(v);
+                    }
+                }
+            }
+        }
+        std::sort(pool.begin(), pool.end());
+        pool.erase(std::unique(pool.begin(), pool.end()), pool.end());
+        const VertexId v = pool[random.below(pool.size())];
+        SCOPED_TRACE("deletion " + std::to_string(k) + ": point " + std::to_string(v));
+        std::vector<TetId> fresh;
+        ASSERT_NO_THROW(fresh = delete_vertex(storage, geometry, v, submerged, &counters))
+            << (hull ? "hull vertex" : "interior vertex");
+        hull_deletions += hull ? 1 : 0;
+        gone[v] = true;
+        resurfaced += std::erase_if(submerged, [&](VertexId s) {
+            return std::any_of(fresh.begin(), fresh.end(),
+                               [&](TetId t) { return slot_of(storage.vertices(t), s) >= 0; });
+        });
+        const auto problems = check_complex(storage, geometry);
+        ASSERT_TRUE(problems.empty()) << problems.front();
+        const Triangulation expected = rebuilt_without(ps, gone);
+        ASSERT_EQ(canonical(solid_tets(storage)), canonical(expected.tets));
+        ASSERT_EQ(submerged, expected.redundant);
+    }
+    EXPECT_EQ(counters.vertices_deleted, static_cast<std::uint64_t>(count));
+    EXPECT_GT(hull_deletions, 0);
+    EXPECT_GT(counters.facets_wrapped, 0u);
+}
+
+class DeletionCorpus : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(DeletionCorpus, EqualsRebuildAfterEachDeletion) {
+    std::size_t resurfaced = 0;
+    delete_and_compare(generate_points(GetParam(), 150, 3), 70, 17, resurfaced);
+}
+
+INSTANTIATE_TEST_SUITE_P(RandomAndDegenerate,
+                         DeletionCorpus,
+                         ::testing::Values("ball",
+                                           "cube",
+                                           "grid",
+                                           "cospherical",
+                                           "skew-lines",
+                                           "moment",
+                                           "paraboloid",
+                                           "layers"));
+
+TEST(VertexDeletion, WeightedDeletionUncoversSubmergedPoints) {
+    const PointSet ps = generate_points("cube", 150, 9, parse_weight_spec("uniform:0:0.08"));
+    std::size_t resurfaced = 0;
+    delete_and_compare(ps, 70, 5, resurfaced);
+    EXPECT_GT(resurfaced, 0u);
+}
+
+TEST(VertexDeletion, WeightedGridWithEqualWeights) {
+    std::size_t resurfaced = 0;
+    delete_and_compare(generate_points("grid", 125, 2, parse_weight_spec("equal:0.5")), 40, 8, resurfaced);
+}
+
+TEST(VertexDeletion, BatchCallEqualsRebuild) {
+    const PointSet ps = generate_points("grid", 216, 1);
+    const Triangulation full = bowyer_watson(ps);
+    const std::vector<std::uint32_t> ids{0, 7, 215, 100, 43, 36, 180};
+    RetriangulationCounters counters;
+    const Triangulation after = delete_vertices(ps, full, ids, &counters);
+    std::vector<bool> gone(ps.size(), false);
+    for (auto id : ids) {
+        gone[id] = true;
+    }
+    const Triangulation expected = rebuilt_without(ps, gone);
+    EXPECT_EQ(canonical(after.tets), canonical(expected.tets));
+    EXPECT_EQ(after.hull_triangles, expected.hull_triangles);
+    EXPECT_EQ(counters.vertices_deleted, ids.size());
+}
+
+TEST(VertexDeletion, DuplicatesAndBadIds) {
+    PointSet ps = generate_points("cube", 50, 4);
+    ps.points.push_back(ps.points[3]);  // point 50 repeats point 3
+    const Triangulation full = bowyer_watson(ps);
+    const std::vector<std::uint32_t> only_first{3};
+    EXPECT_THROW(delete_vertices(ps, full, only_first), Error);
+    const std::vector<std::uint32_t> both{3, 50};
+    const Triangulation after = delete_vertices(ps, full, both);
+    std::vector<bool> gone(ps.size(), false);
+    gone[3] = gone[50] = true;
+    EXPECT_EQ(canonical(after.tets), canonical(rebuilt_without(ps, gone).tets));
+    EXPECT_TRUE(after.duplicates.empty());
+    const std::vector<std::uint32_t> out_of_range{51};
+    EXPECT_THROW(delete_vertices(ps, full, out_of_range), Error);
+    const std::vector<std::uint32_t> twice{4, 4};
+    EXPECT_THROW(delete_vertices(ps, full, twice), Error);
+}
+
+TEST(VertexDeletion, LeavingACoplanarSetIsAnError) {
+    PointSet ps;
+    ps.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}};
+    const Triangulation full = bowyer_watson(ps);
+    const std::vector<std::uint32_t> apex{4};
+    EXPECT_THROW(delete_vertices(ps, full, apex), Error);
+}
+
+}  // namespace
+}  // namespace cavity::core
