@@ -5,128 +5,188 @@
 #include <cstdint>
 
 #include "cavity/predicates/detail/expansion.h"
+#include "small_expansion.h"
 #include "small_integers.h"
 
 namespace cavity::predicates::detail {
 namespace {
 
-// Error of the determinant of the rounded differences (u = 2^-53). With d = d~ + t, |t| <= u|d~|,
-// each monomial (degree 5 in the coordinate differences, degree 4 when it holds a weight
-// difference) moves by at most ((1 + u)^5 - 1) |m~| <= (5u + 10u^2 + 10u^3 + ...) |m~|. The
-// permanent sum |m~|, with |dw| in place of -dw, is computed in doubles with at most 13 roundings
-// along a path, and |det~| >= (1 - 2u) |largest component|. Accepting when |largest| >
-// fl(C * permanent) needs C >= (5u + 11u^2) / ((1 - u)^14 (1 - 2u)) ~ 5u + 85u^2.
-constexpr double kU = 0x1p-53;
-constexpr double kRoundedDifferenceBound = (5.0 + 256.0 * kU) * kU;
+// Stage C's bound (u = 2^-53). Write each difference as rounded + tail, v = v~ + t with
+// |t| <= u |v~| (t from two_diff, exact). Expanded, det has 72 monomials x*y*z*s*s (s a
+// coordinate difference, from the lift) and 24 monomials x*y*z*dw; let P = sum |m~| over them,
+// evaluated on the rounded differences (the permanent). Then
+//   det = B + L + R,
+// B the exact determinant of the rounded differences (stage B), L the first-order terms (one tail,
+// the other factors rounded; at most 5u |m~| per monomial, so sum|terms of L| <= 5u P), R the
+// terms with two or more tails: |R| <= ((1 + u)^5 - 1 - 5u) P <= (10u^2 + 11u^3) P.
+// L is evaluated in doubles in the order of stage C below; along any term's path there are at
+// most 15 roundings (the tail 2x2 minor 3, the 3x3 tail minor 3 more and 1 to add its tail-of-z
+// part, the lift 4, their product 1, the row's two-term sum 1, the final two-level sum 2), so
+// |fl(L) - L| <= gamma_15 * 5u P (Higham, Accuracy and Stability, §3.1), gamma_15 = 15u/(1-15u).
+// Hence |det - (B + fl(L))| <= (10u^2 + 75u^2 / (1 - 15u) + 11u^3) P <= (85u^2 + 1300u^3) P.
+// B + fl(L) is summed exactly and its magnitude bounded from below by
+// expansion_magnitude_lower_bound (one rounding). P is computed in doubles with at most 12
+// roundings along a path, P <= P~ / (1 - u)^12 <= (1 + 13u) P~, and 88 * P~ rounds once, so
+// accepting when fl(lower) > fl(88 * P~) * u^2 needs
+//   88 (1 - u) u^2 >= (1 + u)(85u^2 + 1300u^3)(1 + 13u),
+// which holds. The comparison is made as fl(lower) * 2^80 > fl(88 * P~) * 2^-26, both exact
+// scalings: P~ >= 2^-960 when nonzero keeps the right side normal, and |lower| < 2^917 keeps the
+// left side finite.
+constexpr double kTailBound = 88.0;
+constexpr double kLowerScale = 0x1p80;
+constexpr double kBoundScale = 0x1p-26;
 
-/// h = sign * minor * (x^2 + y^2 + z^2 - w), exactly; h needs room for 14 * minor_len
-/// components. Returns the length of h.
-int lifted_term(int minor_len,
-                const double* minor,
-                double sign,
-                double x,
-                double y,
-                double z,
-                double w,
-                double* h) {
-    double once[48];
-    double x_part[96];
-    double y_part[96];
-    double z_part[96];
-    int once_len = scale_expansion(minor_len, minor, sign * x, once);
-    const int x_len = scale_expansion(once_len, once, x, x_part);
-    once_len = scale_expansion(minor_len, minor, sign * y, once);
-    const int y_len = scale_expansion(once_len, once, y, y_part);
-    once_len = scale_expansion(minor_len, minor, sign * z, once);
-    const int z_len = scale_expansion(once_len, once, z, z_part);
-    double xy[192];
-    const int xy_len = expansion_sum(x_len, x_part, y_len, y_part, xy);
-    if (w == 0.0) {
-        return expansion_sum(xy_len, xy, z_len, z_part, h);
+enum { kA = 0, kB = 1, kC = 2, kD = 3 };
+
+/// The exact determinant det[x, y, z, x^2 + y^2 + z^2 - w] over four rows of expansions, by the
+/// cofactors of the lift column: det = (l_d abc - l_c abd) + (l_b acd - l_a bcd), the 3x3 minors
+/// expanded along z over the 2x2 minors of the x, y columns. False when a buffer would overflow.
+bool lifted_determinant(const SmallExpansion (&x)[4],
+                        const SmallExpansion (&y)[4],
+                        const SmallExpansion (&z)[4],
+                        const SmallExpansion (&w)[4],
+                        SmallExpansion& det) {
+    // minor2[i][j] = x_i y_j - x_j y_i for i < j.
+    SmallExpansion minor2[4][4];
+    for (int i = 0; i < 4; ++i) {
+        for (int j = i + 1; j < 4; ++j) {
+            if (!product_difference(x[i], y[j], x[j], y[i], minor2[i][j])) {
+                return false;
+            }
+        }
     }
-    double xyz[288];
-    const int xyz_len = expansion_sum(xy_len, xy, z_len, z_part, xyz);
-    const int w_len = scale_expansion(minor_len, minor, -sign * w, once);
-    return expansion_sum(xyz_len, xyz, w_len, once, h);
+    // minor3(i, j, k) = z_i m2(j, k) - z_j m2(i, k) + z_k m2(i, j) for i < j < k.
+    auto minor3 = [&](int i, int j, int k, SmallExpansion& out) {
+        SmallExpansion first;
+        SmallExpansion second;
+        SmallExpansion third;
+        SmallExpansion partial;
+        return multiply(z[i], minor2[j][k], first) && multiply(z[j], minor2[i][k], second) &&
+               multiply(z[k], minor2[i][j], third) && subtract(first, second, partial) &&
+               add(partial, third, out);
+    };
+    // term(i) = lift_i * minor, the lift x_i^2 + y_i^2 + z_i^2 - w_i exact.
+    auto term = [&](int i, const SmallExpansion& minor, SmallExpansion& out) {
+        SmallExpansion xx;
+        SmallExpansion yy;
+        SmallExpansion zz;
+        SmallExpansion xy;
+        SmallExpansion xyz;
+        SmallExpansion lift;
+        return multiply(x[i], x[i], xx) && multiply(y[i], y[i], yy) && multiply(z[i], z[i], zz) &&
+               add(xx, yy, xy) && add(xy, zz, xyz) && subtract(xyz, w[i], lift) &&
+               multiply(lift, minor, out);
+    };
+    SmallExpansion abc, abd, acd, bcd;
+    if (!minor3(kA, kB, kC, abc) || !minor3(kA, kB, kD, abd) || !minor3(kA, kC, kD, acd) ||
+        !minor3(kB, kC, kD, bcd)) {
+        return false;
+    }
+    SmallExpansion d_term, c_term, b_term, a_term, dc, ba;
+    return term(kD, abc, d_term) && term(kC, abd, c_term) && term(kB, acd, b_term) &&
+           term(kA, bcd, a_term) && subtract(d_term, c_term, dc) && subtract(b_term, a_term, ba) &&
+           add(dc, ba, det);
 }
 
-/// h = r * s - t * u + v * q for scalars r, t, v and expansions s, u, q of at most 4 components
-/// (a 3x3 minor expanded along its z column). h needs room for 24 components.
-int minor3(double r,
-           int s_len,
-           const double* s,
-           double t,
-           int u_len,
-           const double* u,
-           double v,
-           int q_len,
-           const double* q,
-           double* h) {
-    double rs[8];
-    double tu[8];
-    double vq[8];
-    const int rs_len = scale_expansion(s_len, s, r, rs);
-    const int tu_len = scale_expansion(u_len, u, -t, tu);
-    const int vq_len = scale_expansion(q_len, q, v, vq);
-    double partial[16];
-    const int partial_len = expansion_sum(rs_len, rs, tu_len, tu, partial);
-    return expansion_sum(partial_len, partial, vq_len, vq, h);
+/// Rows of expansions from the rounded differences alone (stage B) or with their tails (stage D).
+bool lifted_determinant(const LiftedRows& rows, bool with_tails, SmallExpansion& det) {
+    SmallExpansion x[4], y[4], z[4], w[4];
+    for (int i = 0; i < 4; ++i) {
+        if (with_tails) {
+            x[i] = two_components(rows.x[i], rows.xt[i]);
+            y[i] = two_components(rows.y[i], rows.yt[i]);
+            z[i] = two_components(rows.z[i], rows.zt[i]);
+            w[i] = two_components(rows.w[i], rows.wt[i]);
+        } else {
+            x[i] = single(rows.x[i]);
+            y[i] = single(rows.y[i]);
+            z[i] = single(rows.z[i]);
+            w[i] = single(rows.w[i]);
+        }
+    }
+    return lifted_determinant(x, y, z, w, det);
 }
 
-}  // namespace
-
-std::optional<Sign> lifted_adaptive(const LiftedRows& rows) {
-    const double* x = rows.x;
-    const double* y = rows.y;
-    const double* z = rows.z;
-    const double* w = rows.w;
-
-    enum { kA = 0, kB = 1, kC = 2, kD = 3 };
-
-    // 2x2 minors of the x, y columns, then 3x3 minors along z (Shewchuk's insphere layout).
-    double ab[4], bc[4], cd[4], da[4], ac[4], bd[4];
-    const int ab_len = product_difference(x[kA], y[kB], x[kB], y[kA], ab);
-    const int bc_len = product_difference(x[kB], y[kC], x[kC], y[kB], bc);
-    const int cd_len = product_difference(x[kC], y[kD], x[kD], y[kC], cd);
-    const int da_len = product_difference(x[kD], y[kA], x[kA], y[kD], da);
-    const int ac_len = product_difference(x[kA], y[kC], x[kC], y[kA], ac);
-    const int bd_len = product_difference(x[kB], y[kD], x[kD], y[kB], bd);
-
-    double abc[24], bcd[24], cda[24], dab[24];
-    // abc = aez*bc - bez*ac + cez*ab, bcd = bez*cd - cez*bd + dez*bc,
-    // cda = cez*da + dez*ac + aez*cd, dab = dez*ab + aez*bd + bez*da.
-    const int abc_len = minor3(z[kA], bc_len, bc, z[kB], ac_len, ac, z[kC], ab_len, ab, abc);
-    const int bcd_len = minor3(z[kB], cd_len, cd, z[kC], bd_len, bd, z[kD], bc_len, bc, bcd);
-    const int cda_len = minor3(z[kC], da_len, da, -z[kD], ac_len, ac, z[kA], cd_len, cd, cda);
-    const int dab_len = minor3(z[kD], ab_len, ab, -z[kA], bd_len, bd, z[kB], da_len, da, dab);
-
-    // det = (dlift*abc - clift*dab) + (blift*cda - alift*bcd)
-    double d_term[336], c_term[336], b_term[336], a_term[336];
-    const int d_len = lifted_term(abc_len, abc, 1.0, x[kD], y[kD], z[kD], w[kD], d_term);
-    const int c_len = lifted_term(dab_len, dab, -1.0, x[kC], y[kC], z[kC], w[kC], c_term);
-    const int b_len = lifted_term(cda_len, cda, 1.0, x[kB], y[kB], z[kB], w[kB], b_term);
-    const int a_len = lifted_term(bcd_len, bcd, -1.0, x[kA], y[kA], z[kA], w[kA], a_term);
-    double dc[672], ba[672];
-    const int dc_len = expansion_sum(d_len, d_term, c_len, c_term, dc);
-    const int ba_len = expansion_sum(b_len, b_term, a_len, a_term, ba);
-    double det[1344];
-    const int det_len = expansion_sum(dc_len, dc, ba_len, ba, det);
-
-    if (rows.differences_exact) {
-        return static_cast<Sign>(expansion_sign(det_len, det));
+/// fl(L), the first-order tail terms, in the evaluation order counted in kTailBound:
+/// with C_i the 3x3 cofactor minors and l_i the lifts of the rounded rows,
+/// L = (T_d - T_c) + (T_b - T_a), T_i = dl_i * C_i + l_i * dC_i, where dl_i and dC_i are the
+/// first-order changes of l_i and C_i caused by the tails.
+double first_order_tails(const LiftedRows& r) {
+    const double* x = r.x;
+    const double* y = r.y;
+    const double* z = r.z;
+    const double* xt = r.xt;
+    const double* yt = r.yt;
+    const double* zt = r.zt;
+    double m2[4][4];
+    double t2[4][4];
+    for (int i = 0; i < 4; ++i) {
+        for (int j = i + 1; j < 4; ++j) {
+            m2[i][j] = x[i] * y[j] - x[j] * y[i];
+            t2[i][j] = (x[i] * yt[j] + xt[i] * y[j]) - (x[j] * yt[i] + xt[j] * y[i]);
+        }
     }
+    auto minor3 = [&](int i, int j, int k) {
+        return z[i] * m2[j][k] - z[j] * m2[i][k] + z[k] * m2[i][j];
+    };
+    auto minor3_tail = [&](int i, int j, int k) {
+        return (z[i] * t2[j][k] - z[j] * t2[i][k] + z[k] * t2[i][j]) +
+               (zt[i] * m2[j][k] - zt[j] * m2[i][k] + zt[k] * m2[i][j]);
+    };
+    auto row = [&](int i, int j, int k, int l) {
+        // T_l for the minor over rows i < j < k.
+        const double lift = ((x[l] * x[l] + y[l] * y[l]) + z[l] * z[l]) - r.w[l];
+        const double lift_tail =
+            2.0 * ((x[l] * xt[l] + y[l] * yt[l]) + z[l] * zt[l]) - r.wt[l];
+        return lift_tail * minor3(i, j, k) + lift * minor3_tail(i, j, k);
+    };
+    return (row(kA, kB, kC, kD) - row(kA, kB, kD, kC)) +
+           (row(kA, kC, kD, kB) - row(kB, kC, kD, kA));
+}
+
+/// P~: the permanent of the rounded rows (each monomial by its magnitude, |dw| for -dw).
+double permanent(const LiftedRows& r) {
+    const double* x = r.x;
+    const double* y = r.y;
+    const double* z = r.z;
     auto perm2 = [&](int i, int j) { return std::abs(x[i] * y[j]) + std::abs(x[j] * y[i]); };
     auto perm3 = [&](int i, int j, int k) {
         return std::abs(z[i]) * perm2(j, k) + std::abs(z[j]) * perm2(i, k) +
                std::abs(z[k]) * perm2(i, j);
     };
-    auto lift = [&](int i) { return x[i] * x[i] + y[i] * y[i] + z[i] * z[i] + std::abs(w[i]); };
-    const double permanent = (lift(kD) * perm3(kA, kB, kC) + lift(kC) * perm3(kA, kB, kD)) +
-                             (lift(kB) * perm3(kA, kC, kD) + lift(kA) * perm3(kB, kC, kD));
-    if (det_len > 0 && std::abs(det[det_len - 1]) > kRoundedDifferenceBound * permanent) {
-        return static_cast<Sign>(expansion_sign(det_len, det));
+    auto lift = [&](int i) {
+        return ((x[i] * x[i] + y[i] * y[i]) + z[i] * z[i]) + std::abs(r.w[i]);
+    };
+    return (lift(kD) * perm3(kA, kB, kC) + lift(kC) * perm3(kA, kB, kD)) +
+           (lift(kB) * perm3(kA, kC, kD) + lift(kA) * perm3(kB, kC, kD));
+}
+
+}  // namespace
+
+std::optional<Verdict> lifted_adaptive(const LiftedRows& rows) {
+    // Stage B.
+    SmallExpansion det;
+    if (!lifted_determinant(rows, false, det)) {
+        return std::nullopt;
     }
-    return std::nullopt;
+    if (rows.differences_exact) {
+        return Verdict{static_cast<Sign>(sign(det)), Stage::kAdaptive};
+    }
+    // Stage C.
+    const double first_order = first_order_tails(rows);
+    double corrected[SmallExpansion::kCapacity + 1];
+    const int corrected_len = expansion_sum(det.size, det.c, 1, &first_order, corrected);
+    const double lower = expansion_magnitude_lower_bound(corrected_len, corrected);
+    if (lower * kLowerScale > (kTailBound * permanent(rows)) * kBoundScale) {
+        return Verdict{static_cast<Sign>(expansion_sign(corrected_len, corrected)),
+                       Stage::kAdaptive};
+    }
+    // Stage D.
+    SmallExpansion exact;
+    if (!lifted_determinant(rows, true, exact)) {
+        return std::nullopt;
+    }
+    return Verdict{static_cast<Sign>(sign(exact)), Stage::kExact};
 }
 
 }  // namespace cavity::predicates::detail

@@ -13,18 +13,18 @@
 namespace cavity::predicates::detail {
 namespace {
 
-std::optional<Sign> orient4d_adaptive(const std::array<WeightedPoint3, 5>& p) {
+std::optional<Verdict> orient4d_adaptive(const std::array<WeightedPoint3, 5>& p) {
     LiftedRows rows{};
     double tails = 0.0;
     for (int i = 0; i < 4; ++i) {
-        double tx, ty, tz, tw;
-        two_diff(p[i].x, p[4].x, rows.x[i], tx);
-        two_diff(p[i].y, p[4].y, rows.y[i], ty);
-        two_diff(p[i].z, p[4].z, rows.z[i], tz);
-        two_diff(p[i].w, p[4].w, rows.w[i], tw);
+        two_diff(p[i].x, p[4].x, rows.x[i], rows.xt[i]);
+        two_diff(p[i].y, p[4].y, rows.y[i], rows.yt[i]);
+        two_diff(p[i].z, p[4].z, rows.z[i], rows.zt[i]);
+        two_diff(p[i].w, p[4].w, rows.w[i], rows.wt[i]);
         // Tails are nonzero multiples of 2^-332 or zero, and far below overflow here, so this
         // sum of magnitudes is 0 exactly when every tail is.
-        tails += std::abs(tx) + std::abs(ty) + std::abs(tz) + std::abs(tw);
+        tails += std::abs(rows.xt[i]) + std::abs(rows.yt[i]) + std::abs(rows.zt[i]) +
+                 std::abs(rows.wt[i]);
     }
     rows.differences_exact = tails == 0.0;
     return lifted_adaptive(rows);

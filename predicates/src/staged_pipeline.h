@@ -95,8 +95,11 @@ inline WeightedPoint3 scaled(const WeightedPoint3& p, int k) {
 }
 
 /// Runs the stages after a failed filter on the query `points`. `filter(points)` returns +1, -1
-/// or 0 (undecided); `adaptive(points)` an optional Sign, valid only for inputs in `window`;
-/// `exact(points)` the exact Sign for any input.
+/// or 0 (undecided); `adaptive(points)`, valid only for inputs in `window`, the verdict of the
+/// expansion stages (kAdaptive for stages B and C, kExact for the exact expansion with the
+/// difference tails) or none when its expansions would outgrow their buffers; `exact(points)` the
+/// exact Sign by GMP for any input (the inputs too spread out for any power-of-two shift to bring
+/// them into the window, and the rare overflow of the expansion buffers).
 template <typename P, std::size_t N, typename Filter, typename Adaptive, typename Exact>
 Verdict run_after_filter(
     std::array<P, N> points, ExponentWindow window, Filter filter, Adaptive adaptive, Exact exact) {
@@ -117,8 +120,8 @@ Verdict run_after_filter(
             return {static_cast<Sign>(s), Stage::kFilter};
         }
     }
-    if (const std::optional<Sign> s = adaptive(points)) {
-        return {*s, Stage::kAdaptive};
+    if (const std::optional<Verdict> v = adaptive(points)) {
+        return *v;
     }
     return {exact(points), Stage::kExact};
 }

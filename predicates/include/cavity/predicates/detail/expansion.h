@@ -156,4 +156,62 @@ inline int expansion_sign(int elen, const double* e) {
     return e[elen - 1] > 0.0 ? 1 : -1;
 }
 
+/// A lower bound on |e| for a nonoverlapping expansion: |e_n| - 2|e_(n-1)|, computed with one
+/// rounding (so the true bound is at least the result divided by 1 + u). Why 2|e_(n-1)|: the
+/// components below e_(n-1) have all their bits under the lowest set bit of e_(n-1), so their sum
+/// is below |e_(n-1)|, and the n-1 lower components sum to less than 2|e_(n-1)|. (Only the
+/// nonoverlapping property is used: a single-bit top component, e.g. 2^k - 0.75 * 2^k, can be
+/// nearly cancelled by the rest, so |e_n| alone is no lower bound.)
+inline double expansion_magnitude_lower_bound(int elen, const double* e) {
+    if (elen == 0) {
+        return 0.0;
+    }
+    if (elen == 1) {
+        return std::abs(e[0]);
+    }
+    return std::abs(e[elen - 1]) - 2.0 * std::abs(e[elen - 2]);
+}
+
+/// Shewchuk's compress: rewrites the nonoverlapping expansion e (in place, the same value) as a
+/// nonadjacent one with as few components as the two sweeps find, largest last. Products of
+/// expansions grow quadratically in the number of components, so the exact stages compress every
+/// intermediate result; a compressed exact minor of 53-bit inputs has only a handful. Returns the
+/// new length.
+inline int compress(int elen, double* e) {
+    if (elen <= 1) {
+        return elen;
+    }
+    // Downward sweep: carry the running sum from the top, parking each settled sum at the top of
+    // the array (bottom moves down). Each fast_two_sum is exact because the running sum is at
+    // least as large as the next smaller component (Shewchuk, Theorem 23).
+    double q = e[elen - 1];
+    int bottom = elen - 1;
+    for (int i = elen - 2; i >= 0; --i) {
+        double sum;
+        double err;
+        fast_two_sum(q, e[i], sum, err);
+        if (err != 0.0) {
+            e[bottom--] = sum;
+            q = err;
+        } else {
+            q = sum;
+        }
+    }
+    // Upward sweep: fold the parked sums back from the smallest, emitting nonzero errors.
+    int top = 0;
+    for (int i = bottom + 1; i < elen; ++i) {
+        double sum;
+        double err;
+        fast_two_sum(e[i], q, sum, err);
+        if (err != 0.0) {
+            e[top++] = err;
+        }
+        q = sum;
+    }
+    if (q != 0.0) {
+        e[top++] = q;
+    }
+    return top;
+}
+
 }  // namespace cavity::predicates::detail

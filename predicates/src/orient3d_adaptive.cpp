@@ -1,0 +1,139 @@
+#include "orient3d_adaptive.h"
+
+#include <cmath>
+
+#include "cavity/predicates/detail/expansion.h"
+#include "small_expansion.h"
+
+namespace cavity::predicates::detail {
+namespace {
+
+// Stage C's bound (u = 2^-53). Write each difference as rounded + tail, d = d~ + t with
+// |t| <= u |d~| (t from two_diff, exact). The determinant is a sum of 6 signed monomials of degree
+// 3; let P = sum |m~| over them, evaluated on the rounded differences (the permanent). Then
+//   det = B + L + R,
+// B the exact determinant of the rounded differences (stage B's expansion), L the 18 first-order
+// terms (one tail and two rounded factors), R the terms with two or three tails:
+//   |R| <= ((1 + u)^3 - 1 - 3u) P = (3u^2 + u^3) P.
+// L is evaluated in doubles in the order below, with at most 7 roundings along any term's path
+// (tail product, the sum of two products, their difference, the product with the z factor, the
+// sum with the tail-of-z term, two for the sum of the three rows; the tail-of-z terms have 6), so
+// |fl(L) - L| <= gamma_7 * sum|terms| <= gamma_7 * 3u P (Higham, Accuracy and Stability, §3.1;
+// each monomial contributes three terms of at most u |m~|), gamma_7 = 7u / (1 - 7u).
+// Hence |det - (B + fl(L))| <= (3u^2 + 21u^2 / (1 - 7u) + u^3) P <= (24u^2 + 200u^3) P.
+// B + fl(L) is summed exactly (one more expansion sum) and its magnitude bounded from below by
+// expansion_magnitude_lower_bound, computed with one rounding. P is computed in doubles with at
+// most 5 roundings along a path, P <= P~ / (1 - u)^5 <= (1 + 6u) P~, and the product 26 * P~
+// rounds once, so accepting when fl(lower) * 2^106 > fl(26 * P~) needs
+//   26 (1 - u) u^2 >= (1 + u)(24u^2 + 200u^3)(1 + 6u),
+// which holds with room to spare. The 2^106 scale keeps the comparison clear of underflow: P~ is
+// at least 2^-996 when nonzero, so 26 u^2 P~ could be subnormal, but fl(lower) * 2^106 is below
+// 2^1017 (no overflow) and exact.
+constexpr double kTailBound = 26.0;
+constexpr double kTailBoundScale = 0x1p106;
+
+/// The exact determinant with rows of exact differences (stage D): each difference as its one or
+/// two components, the 2x2 minors of the x, y columns, then the expansion along z. False when a
+/// buffer would overflow.
+bool exact_determinant(const SmallExpansion (&x)[3],
+                       const SmallExpansion (&y)[3],
+                       const SmallExpansion (&z)[3],
+                       SmallExpansion& det) {
+    // det = z0 (x1 y2 - y1 x2) + z1 (x2 y0 - y2 x0) + z2 (x0 y1 - y0 x1)
+    SmallExpansion minor[3];
+    SmallExpansion term[3];
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        const int k = (i + 2) % 3;
+        if (!product_difference(x[j], y[k], y[j], x[k], minor[i]) ||
+            !multiply(z[i], minor[i], term[i])) {
+            return false;
+        }
+    }
+    SmallExpansion partial;
+    return add(term[0], term[1], partial) && add(partial, term[2], det);
+}
+
+}  // namespace
+
+std::optional<Verdict> orient3d_adaptive(const std::array<Point3, 4>& p) {
+    const Point3& a = p[0];
+    const Point3& b = p[1];
+    const Point3& c = p[2];
+    const Point3& d = p[3];
+    double adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz;
+    double adxt, adyt, adzt, bdxt, bdyt, bdzt, cdxt, cdyt, cdzt;
+    two_diff(a.x, d.x, adx, adxt);
+    two_diff(a.y, d.y, ady, adyt);
+    two_diff(a.z, d.z, adz, adzt);
+    two_diff(b.x, d.x, bdx, bdxt);
+    two_diff(b.y, d.y, bdy, bdyt);
+    two_diff(b.z, d.z, bdz, bdzt);
+    two_diff(c.x, d.x, cdx, cdxt);
+    two_diff(c.y, d.y, cdy, cdyt);
+    two_diff(c.z, d.z, cdz, cdzt);
+
+    // Stage B: the exact determinant of the rounded differences (Shewchuk's layout).
+    double bc[4];
+    double ca[4];
+    double ab[4];
+    const int bc_len = product_difference(bdx, cdy, bdy, cdx, bc);
+    const int ca_len = product_difference(cdx, ady, cdy, adx, ca);
+    const int ab_len = product_difference(adx, bdy, ady, bdx, ab);
+    double a_term[8];
+    double b_term[8];
+    double c_term[8];
+    const int a_len = scale_expansion(bc_len, bc, adz, a_term);
+    const int b_len = scale_expansion(ca_len, ca, bdz, b_term);
+    const int c_len = scale_expansion(ab_len, ab, cdz, c_term);
+    double ab_sum[16];
+    const int ab_sum_len = expansion_sum(a_len, a_term, b_len, b_term, ab_sum);
+    double det[25];
+    const int det_len = expansion_sum(ab_sum_len, ab_sum, c_len, c_term, det);
+
+    // The tails are multiples of 2^-332 below 2^250 here, so this sum of magnitudes is 0 exactly
+    // when every tail is.
+    const double tails = std::abs(adxt) + std::abs(adyt) + std::abs(adzt) + std::abs(bdxt) +
+                         std::abs(bdyt) + std::abs(bdzt) + std::abs(cdxt) + std::abs(cdyt) +
+                         std::abs(cdzt);
+    if (tails == 0.0) {
+        return Verdict{static_cast<Sign>(expansion_sign(det_len, det)), Stage::kAdaptive};
+    }
+
+    // Stage C: add the first-order tail terms in doubles (the order counted in kTailBound).
+    const double first_order =
+        (adz * ((bdx * cdyt + cdy * bdxt) - (bdy * cdxt + cdx * bdyt)) +
+         adzt * (bdx * cdy - bdy * cdx)) +
+        (bdz * ((cdx * adyt + ady * cdxt) - (cdy * adxt + adx * cdyt)) +
+         bdzt * (cdx * ady - cdy * adx)) +
+        (cdz * ((adx * bdyt + bdy * adxt) - (ady * bdxt + bdx * adyt)) +
+         cdzt * (adx * bdy - ady * bdx));
+    double corrected[26];
+    const int corrected_len = expansion_sum(det_len, det, 1, &first_order, corrected);
+    const double permanent = (std::abs(bdx * cdy) + std::abs(bdy * cdx)) * std::abs(adz) +
+                             (std::abs(cdx * ady) + std::abs(cdy * adx)) * std::abs(bdz) +
+                             (std::abs(adx * bdy) + std::abs(ady * bdx)) * std::abs(cdz);
+    const double lower = expansion_magnitude_lower_bound(corrected_len, corrected);
+    if (lower * kTailBoundScale > kTailBound * permanent) {
+        return Verdict{static_cast<Sign>(expansion_sign(corrected_len, corrected)),
+                       Stage::kAdaptive};
+    }
+
+    // Stage D: the exact determinant of the two-component differences.
+    const SmallExpansion x[3] = {exact_difference(a.x, d.x),
+                                 exact_difference(b.x, d.x),
+                                 exact_difference(c.x, d.x)};
+    const SmallExpansion y[3] = {exact_difference(a.y, d.y),
+                                 exact_difference(b.y, d.y),
+                                 exact_difference(c.y, d.y)};
+    const SmallExpansion z[3] = {exact_difference(a.z, d.z),
+                                 exact_difference(b.z, d.z),
+                                 exact_difference(c.z, d.z)};
+    SmallExpansion exact;
+    if (!exact_determinant(x, y, z, exact)) {
+        return std::nullopt;
+    }
+    return Verdict{static_cast<Sign>(sign(exact)), Stage::kExact};
+}
+
+}  // namespace cavity::predicates::detail
