@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Regenerates the quick tier of every experiment suite, the plots and the summary tables:
+#   results/experiments/quick/*.csv, *.j.csv, *.meta.json   (cavity experiment)
+#   results/experiments/plots/*.png, *.svg, summary.md       (results/plot.py)
+# The report, results/README.md, embeds those plots. Measured on the 2-core project machine:
+# see results/README.md for the time this takes. Usage: scripts/experiments-quick.sh [BUILD_DIR]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${1:-build/release}"
+if [[ ! -x "$build/cli/cavity" ]]; then
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  cmake --build "$build" -j2 --target cavity
+fi
+out=results/experiments/quick
+start=$(date +%s)
+for suite in jtets creation scaling quadratic walk adversarial degenerate; do
+  t0=$(date +%s)
+  "$build/cli/cavity" experiment "$suite" --tier quick --out "$out" --quiet
+  echo "$suite: $(( $(date +%s) - t0 )) s"
+done
+# Debian's matplotlib: /usr/bin/python3, not whichever python3 comes first on PATH.
+/usr/bin/python3 results/plot.py "$out" results/experiments/plots
+echo "quick tier: $(( $(date +%s) - start )) s in all; report: results/README.md"
