@@ -40,21 +40,14 @@ enum { kA = 0, kB = 1, kC = 2, kD = 3 };
 
 /// The exact determinant det[x, y, z, x^2 + y^2 + z^2 - w] over four rows of expansions, by the
 /// cofactors of the lift column: det = (l_d abc - l_c abd) + (l_b acd - l_a bcd), the 3x3 minors
-/// expanded along z over the 2x2 minors of the x, y columns. False when a buffer would overflow.
-bool lifted_determinant(const SmallExpansion (&x)[4],
+/// expanded along z over the 2x2 minors of the x, y columns (minor2[i][j] = x_i y_j - x_j y_i,
+/// i < j, given). False when a buffer would overflow.
+bool lifted_determinant(const SmallExpansion (&minor2)[4][4],
+                        const SmallExpansion (&x)[4],
                         const SmallExpansion (&y)[4],
                         const SmallExpansion (&z)[4],
                         const SmallExpansion (&w)[4],
                         SmallExpansion& det) {
-    // minor2[i][j] = x_i y_j - x_j y_i for i < j.
-    SmallExpansion minor2[4][4];
-    for (int i = 0; i < 4; ++i) {
-        for (int j = i + 1; j < 4; ++j) {
-            if (!product_difference(x[i], y[j], x[j], y[i], minor2[i][j])) {
-                return false;
-            }
-        }
-    }
     // minor3(i, j, k) = z_i m2(j, k) - z_j m2(i, k) + z_k m2(i, j) for i < j < k.
     auto minor3 = [&](int i, int j, int k, SmallExpansion& out) {
         SmallExpansion first;
@@ -92,19 +85,26 @@ bool lifted_determinant(const SmallExpansion (&x)[4],
 bool lifted_determinant(const LiftedRows& rows, bool with_tails, SmallExpansion& det) {
     SmallExpansion x[4], y[4], z[4], w[4];
     for (int i = 0; i < 4; ++i) {
-        if (with_tails) {
-            x[i] = two_components(rows.x[i], rows.xt[i]);
-            y[i] = two_components(rows.y[i], rows.yt[i]);
-            z[i] = two_components(rows.z[i], rows.zt[i]);
-            w[i] = two_components(rows.w[i], rows.wt[i]);
-        } else {
-            x[i] = single(rows.x[i]);
-            y[i] = single(rows.y[i]);
-            z[i] = single(rows.z[i]);
-            w[i] = single(rows.w[i]);
+        set_two_components(x[i], rows.x[i], with_tails ? rows.xt[i] : 0.0);
+        set_two_components(y[i], rows.y[i], with_tails ? rows.yt[i] : 0.0);
+        set_two_components(z[i], rows.z[i], with_tails ? rows.zt[i] : 0.0);
+        set_two_components(w[i], rows.w[i], with_tails ? rows.wt[i] : 0.0);
+    }
+    SmallExpansion minor2[4][4];
+    for (int i = 0; i < 4; ++i) {
+        for (int j = i + 1; j < 4; ++j) {
+            if (with_tails) {
+                if (!product_difference(x[i], y[j], x[j], y[i], minor2[i][j])) {
+                    return false;
+                }
+            } else {
+                // One-component rows: Dekker products, at most 4 components, no compression.
+                minor2[i][j].size =
+                    product_difference(rows.x[i], rows.y[j], rows.x[j], rows.y[i], minor2[i][j].c);
+            }
         }
     }
-    return lifted_determinant(x, y, z, w, det);
+    return lifted_determinant(minor2, x, y, z, w, det);
 }
 
 /// fl(L), the first-order tail terms, in the evaluation order counted in kTailBound:
@@ -136,8 +136,7 @@ double first_order_tails(const LiftedRows& r) {
     auto row = [&](int i, int j, int k, int l) {
         // T_l for the minor over rows i < j < k.
         const double lift = ((x[l] * x[l] + y[l] * y[l]) + z[l] * z[l]) - r.w[l];
-        const double lift_tail =
-            2.0 * ((x[l] * xt[l] + y[l] * yt[l]) + z[l] * zt[l]) - r.wt[l];
+        const double lift_tail = 2.0 * ((x[l] * xt[l] + y[l] * yt[l]) + z[l] * zt[l]) - r.wt[l];
         return lift_tail * minor3(i, j, k) + lift * minor3_tail(i, j, k);
     };
     return (row(kA, kB, kC, kD) - row(kA, kB, kD, kC)) +

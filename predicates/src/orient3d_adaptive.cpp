@@ -101,13 +101,12 @@ std::optional<Verdict> orient3d_adaptive(const std::array<Point3, 4>& p) {
     }
 
     // Stage C: add the first-order tail terms in doubles (the order counted in kTailBound).
-    const double first_order =
-        (adz * ((bdx * cdyt + cdy * bdxt) - (bdy * cdxt + cdx * bdyt)) +
-         adzt * (bdx * cdy - bdy * cdx)) +
-        (bdz * ((cdx * adyt + ady * cdxt) - (cdy * adxt + adx * cdyt)) +
-         bdzt * (cdx * ady - cdy * adx)) +
-        (cdz * ((adx * bdyt + bdy * adxt) - (ady * bdxt + bdx * adyt)) +
-         cdzt * (adx * bdy - ady * bdx));
+    const double first_order = (adz * ((bdx * cdyt + cdy * bdxt) - (bdy * cdxt + cdx * bdyt)) +
+                                adzt * (bdx * cdy - bdy * cdx)) +
+                               (bdz * ((cdx * adyt + ady * cdxt) - (cdy * adxt + adx * cdyt)) +
+                                bdzt * (cdx * ady - cdy * adx)) +
+                               (cdz * ((adx * bdyt + bdy * adxt) - (ady * bdxt + bdx * adyt)) +
+                                cdzt * (adx * bdy - ady * bdx));
     double corrected[26];
     const int corrected_len = expansion_sum(det_len, det, 1, &first_order, corrected);
     const double permanent = (std::abs(bdx * cdy) + std::abs(bdy * cdx)) * std::abs(adz) +
@@ -120,15 +119,12 @@ std::optional<Verdict> orient3d_adaptive(const std::array<Point3, 4>& p) {
     }
 
     // Stage D: the exact determinant of the two-component differences.
-    const SmallExpansion x[3] = {exact_difference(a.x, d.x),
-                                 exact_difference(b.x, d.x),
-                                 exact_difference(c.x, d.x)};
-    const SmallExpansion y[3] = {exact_difference(a.y, d.y),
-                                 exact_difference(b.y, d.y),
-                                 exact_difference(c.y, d.y)};
-    const SmallExpansion z[3] = {exact_difference(a.z, d.z),
-                                 exact_difference(b.z, d.z),
-                                 exact_difference(c.z, d.z)};
+    SmallExpansion x[3], y[3], z[3];
+    for (int i = 0; i < 3; ++i) {
+        set_exact_difference(x[i], p[i].x, d.x);
+        set_exact_difference(y[i], p[i].y, d.y);
+        set_exact_difference(z[i], p[i].z, d.z);
+    }
     SmallExpansion exact;
     if (!exact_determinant(x, y, z, exact)) {
         return std::nullopt;

@@ -19,34 +19,25 @@ struct SmallExpansion {
     double c[kCapacity];
 };
 
-/// hi + lo as an expansion, for a rounded difference hi and its tail lo from two_diff
-/// (|lo| <= ulp(hi) / 2, so the two do not overlap).
-inline SmallExpansion two_components(double hi, double lo) {
-    SmallExpansion e;
+/// e = hi + lo, for a rounded difference hi and its tail lo from two_diff (|lo| <= ulp(hi) / 2,
+/// so the two do not overlap); lo = 0 gives the rounded difference alone (stage B). Filled in
+/// place: a SmallExpansion is too large to return by value on the hot path.
+inline void set_two_components(SmallExpansion& e, double hi, double lo) {
+    e.size = 0;
     if (lo != 0.0) {
         e.c[e.size++] = lo;
     }
     if (hi != 0.0) {
         e.c[e.size++] = hi;
     }
-    return e;
 }
 
-/// The exact difference a - b as an expansion of one or two components (none when a == b).
-inline SmallExpansion exact_difference(double a, double b) {
+/// e = a - b exactly, as one or two components (none when a == b).
+inline void set_exact_difference(SmallExpansion& e, double a, double b) {
     double hi;
     double lo;
     two_diff(a, b, hi, lo);
-    return two_components(hi, lo);
-}
-
-/// The expansion of one double (its rounded difference with the tail dropped, for stage B).
-inline SmallExpansion single(double v) {
-    SmallExpansion e;
-    if (v != 0.0) {
-        e.c[e.size++] = v;
-    }
-    return e;
+    set_two_components(e, hi, lo);
 }
 
 /// out = a + b (out may not alias a or b); false when out might not fit.
@@ -68,24 +59,33 @@ inline bool subtract(const SmallExpansion& a, const SmallExpansion& b, SmallExpa
     return add(a, minus_b, out);
 }
 
-/// out = a * b (out may not alias a or b): the sum over b's components of a scaled by each,
-/// accumulated by expansion sums. False when an intermediate might not fit.
+/// out = a * b (out may not alias a or b): the longer factor scaled by each component of the
+/// shorter, the partial products summed by expansion sums. False when an intermediate might not
+/// fit.
 inline bool multiply(const SmallExpansion& a, const SmallExpansion& b, SmallExpansion& out) {
-    out.size = 0;
-    if (2 * a.size * b.size > SmallExpansion::kCapacity) {
+    const SmallExpansion& longer = a.size >= b.size ? a : b;
+    const SmallExpansion& shorter = a.size >= b.size ? b : a;
+    if (2 * longer.size * shorter.size > SmallExpansion::kCapacity) {
         return false;
     }
-    double scaled[SmallExpansion::kCapacity];
-    double sum[SmallExpansion::kCapacity];
-    for (int j = 0; j < b.size; ++j) {
-        const int scaled_len = scale_expansion(a.size, a.c, b.c[j], scaled);
-        const int sum_len = expansion_sum(out.size, out.c, scaled_len, scaled, sum);
-        for (int i = 0; i < sum_len; ++i) {
-            out.c[i] = sum[i];
-        }
-        out.size = sum_len;
+    if (shorter.size <= 1) {
+        out.size =
+            shorter.size == 0 ? 0 : scale_expansion(longer.size, longer.c, shorter.c[0], out.c);
+        out.size = compress(out.size, out.c);
+        return true;
     }
-    out.size = compress(out.size, out.c);
+    // Ping-pong between two partial sums; the last sum goes straight into out.
+    double partial[2][SmallExpansion::kCapacity];
+    double scaled[SmallExpansion::kCapacity];
+    int len = scale_expansion(longer.size, longer.c, shorter.c[0], partial[0]);
+    int current = 0;
+    for (int j = 1; j < shorter.size; ++j) {
+        const int scaled_len = scale_expansion(longer.size, longer.c, shorter.c[j], scaled);
+        double* target = j + 1 == shorter.size ? out.c : partial[1 - current];
+        len = expansion_sum(len, partial[current], scaled_len, scaled, target);
+        current = 1 - current;
+    }
+    out.size = compress(len, out.c);
     return true;
 }
 
