@@ -1,6 +1,6 @@
 // cavity against CGAL's Delaunay_triangulation_3 (Epick, range insertion with its spatial sort)
 // on the same points in the same process. Prints one CSV row per (distribution, n, engine, run):
-// the seconds for order + triangulation, the tetrahedra, and peak memory when one engine runs
+// the CPU seconds for order + triangulation, the tetrahedra, and peak memory when one engine runs
 // alone (--only). The ratios are made by bench/run_peers_bench.sh.
 
 #include <sys/resource.h>
@@ -8,7 +8,7 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -23,8 +23,12 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CgalDelaunay = CGAL::Delaunay_triangulation_3<Kernel>;
 
+// Process CPU time rather than wall-clock time: on a shared machine a descheduled engine would
+// otherwise be charged for other processes' work. Both engines are single-threaded.
 double now() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
 std::uint64_t peak_rss_bytes() {

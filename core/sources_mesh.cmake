@@ -7,4 +7,5 @@ target_sources(cavity_core PRIVATE
   src/duplicates.cpp
   src/triangulate.cpp
   src/validate.cpp
+  src/page_releaser.cpp
 )

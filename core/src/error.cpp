@@ -6,9 +6,11 @@ std::string located_message(const std::string& file, std::optional<std::size_t> 
                             const std::string& what) {
     std::string message = file;
     if (line) {
-        message += ":" + std::to_string(*line);
+        message += ':';
+        message += std::to_string(*line);
     }
-    message += ": " + what;
+    message += ": ";
+    message += what;
     return message;
 }
 

@@ -19,7 +19,7 @@ void Geometry::count(const perturbation::SosVerdict& v, PredicateKind kind, Coun
     }
 }
 
-bool Geometry::conflicts_solid(const TetVertices& t, VertexId u, Counters* counters) const {
+bool Geometry::conflicts_solid_exactly(const TetVertices& t, VertexId u, Counters* counters) const {
     const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
     if (!weighted()) {
         if (counters == nullptr) {

@@ -56,21 +56,19 @@ SosVerdict insphere_sos_staged(const Point3& a,
     return {r.sign, exact.stage, r.cofactors};
 }
 
-Sign insphere_sos(const Point3& a,
-                  const Point3& b,
-                  const Point3& c,
-                  const Point3& d,
-                  const Point3& e,
-                  const Keys5& keys) {
-    const Sign exact = predicates::insphere(a, b, c, d, e);
-    if (exact != Sign::kZero) {
-        return exact;
-    }
+namespace detail {
+
+Sign sos_tie(const Point3& a,
+             const Point3& b,
+             const Point3& c,
+             const Point3& d,
+             const Point3& e,
+             const Keys5& keys) {
     return resolve_zero({a, b, c, d, e}, keys).sign;
 }
 
-// orient4d is the lifted determinant with h = |p|^2 - w; the perturbation only touches h, so the
-// cofactors are the unweighted orient3d minors.
+}  // namespace detail
+
 SosVerdict orient4d_sos_staged(const WeightedPoint3& a,
                                const WeightedPoint3& b,
                                const WeightedPoint3& c,
@@ -84,20 +82,6 @@ SosVerdict orient4d_sos_staged(const WeightedPoint3& a,
     const Resolution r =
         resolve_zero({position(a), position(b), position(c), position(d), position(e)}, keys);
     return {r.sign, exact.stage, r.cofactors};
-}
-
-Sign orient4d_sos(const WeightedPoint3& a,
-                  const WeightedPoint3& b,
-                  const WeightedPoint3& c,
-                  const WeightedPoint3& d,
-                  const WeightedPoint3& e,
-                  const Keys5& keys) {
-    const Sign exact = predicates::orient4d(a, b, c, d, e);
-    if (exact != Sign::kZero) {
-        return exact;
-    }
-    return resolve_zero({position(a), position(b), position(c), position(d), position(e)}, keys)
-        .sign;
 }
 
 }  // namespace cavity::perturbation

@@ -7,8 +7,9 @@
 namespace cavity::core {
 
 /// One tetrahedron of the array storage: its vertices and, for each facet f, the half-facet
-/// 4 t' + f' on the other side (so a walk learns the mirror facet for free), in 32 bytes.
-struct ArrayRecord {
+/// 4 t' + f' on the other side (so a walk learns the mirror facet for free), in 32 bytes aligned to
+/// 32, so one record never straddles two cache lines.
+struct alignas(32) ArrayRecord {
     TetVertices v;
     std::array<HalfFacet, 4> n{kNoHalfFacet, kNoHalfFacet, kNoHalfFacet, kNoHalfFacet};
 };

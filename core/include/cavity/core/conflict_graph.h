@@ -59,7 +59,10 @@ public:
             head_.resize(engine.storage().capacity(), kNoVertex);
         }
         // Where to start each walk: a new cell built on a face of the old cell, when there is one.
-        start_of_old_.assign(engine.cavity_faces().begin(), engine.cavity_faces().end());
+        start_of_old_.clear();
+        for (const CavityFace& face : engine.cavity_faces()) {
+            start_of_old_.emplace_back(face.inner, face.created);
+        }
         std::sort(start_of_old_.begin(), start_of_old_.end());
         const TetId fallback = engine.created().front();
         for (TetId old_cell : engine.deleted()) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "cavity/core/pod_stack.h"
 #include "cavity/core/tetrahedron.h"
 
 namespace cavity::core {
@@ -21,7 +22,7 @@ public:
     void begin(std::size_t faces);
 
     /// The local number of a boundary vertex of the current cavity (matrix mode only).
-    std::uint32_t local(VertexId v) {
+    [[gnu::always_inline]] std::uint32_t local(VertexId v) {
         // At most kMatrixSide vertices in kLocalSlots slots: the table is at most a quarter full.
         std::size_t i = ((v * 0x9E37'79B9u) >> 24) & (kLocalSlots - 1);
         while (local_table_[i].vertex != v) {
@@ -41,7 +42,7 @@ public:
     /// Registers half-facet h whose face, rotated to start at u, is (u, p, q), p and q given by
     /// their local numbers. Returns the partner's half-facet if (u, q, p) was registered before,
     /// else kNoHalfFacet.
-    HalfFacet match_local(std::uint32_t lp, std::uint32_t lq, HalfFacet h) {
+    [[gnu::always_inline]] HalfFacet match_local(std::uint32_t lp, std::uint32_t lq, HalfFacet h) {
         HalfFacet& partner = matrix_[lq * kMatrixSide + lp];
         if (partner != kNoHalfFacet) {
             const HalfFacet found = partner;
@@ -81,11 +82,11 @@ private:
     bool use_matrix_ = true;
     std::uint32_t locals_ = 0;
     std::vector<Local> local_table_ = std::vector<Local>(kLocalSlots, Local{kNoVertex, 0});
-    std::vector<std::uint32_t> local_touched_;
+    PodStack<std::uint32_t> local_touched_;
     std::vector<HalfFacet> matrix_ = std::vector<HalfFacet>(kMatrixSide * kMatrixSide, kNoHalfFacet);
-    std::vector<std::uint32_t> matrix_touched_;
+    PodStack<std::uint32_t> matrix_touched_;
     std::vector<Entry> table_ = std::vector<Entry>(64, Entry{kEmpty, kNoHalfFacet});
-    std::vector<std::size_t> table_touched_;
+    PodStack<std::size_t> table_touched_;
 };
 
 }  // namespace cavity::core

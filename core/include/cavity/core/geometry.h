@@ -7,6 +7,7 @@
 #include "cavity/core/tetrahedron.h"
 #include "cavity/perturbation/outer_halfspace.h"
 #include "cavity/perturbation/sos.h"
+#include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"
 #include "cavity/predicates/point.h"
 
@@ -52,8 +53,18 @@ public:
     }
 
     /// True when u is in the perturbed open circumball (weighted: below the perturbed witness
-    /// plane) of the solid tetrahedron t.
-    bool conflicts_solid(const TetVertices& t, VertexId u, Counters* counters) const;
+    /// plane) of the solid tetrahedron t. The common case (unweighted, uncounted, not a tie) is
+    /// inline; the perturbation keys are read only on an exact tie.
+    [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t, VertexId u, Counters* counters) const {
+        if (counters == nullptr && !weighted()) {
+            const Sign exact =
+                predicates::insphere(point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
+            if (exact != Sign::kZero) {
+                return exact == Sign::kPos;
+            }
+        }
+        return conflicts_solid_exactly(t, u, counters);
+    }
 
     /// True when u is in the perturbed outer halfspace of the hull triangle of ghost tetrahedron
     /// t. `interior` is any vertex strictly behind every hull facet's plane or on the hull
@@ -64,6 +75,7 @@ public:
                          Counters* counters) const;
 
 private:
+    bool conflicts_solid_exactly(const TetVertices& t, VertexId u, Counters* counters) const;
     void count(const perturbation::SosVerdict& v, PredicateKind kind, Counters* counters) const;
 
     std::vector<Point3> points_;

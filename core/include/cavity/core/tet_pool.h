@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "cavity/core/page_releaser.h"
+#include "cavity/core/pod_stack.h"
 #include "cavity/core/tetrahedron.h"
 
 namespace cavity::core {
@@ -55,6 +57,29 @@ public:
         return kNoTet;
     }
 
+    /// Hands every live tetrahedron's vertices to `emit`, in slot order, then empties the pool.
+    /// The records already visited are returned to the operating system as the visit advances
+    /// (whole pages, with madvise on Linux), so that copying the tetrahedra out does not add a
+    /// second copy on top of the storage at the peak. Nothing may read the pool afterwards.
+    template <class Emit>
+    void drain(Emit&& emit) {
+        const std::size_t n = records_.size();
+        PageReleaser releaser(reinterpret_cast<unsigned char*>(records_.data()));
+        for (std::size_t t = 0; t < n; ++t) {
+            if (alive(static_cast<TetId>(t))) {
+                emit(records_[t].v);
+            }
+            if ((t & 0xFFFFu) == 0xFFFFu) {
+                releaser.release_before(reinterpret_cast<unsigned char*>(records_.data() + t + 1));
+            }
+        }
+        std::vector<Record>().swap(records_);
+        std::vector<std::uint64_t>().swap(alive_);
+        free_ = PodStack<TetId>();
+        std::vector<TetId>().swap(vertex_tet_);
+        live_ = 0;
+    }
+
     std::size_t bytes() const {
         return records_.capacity() * sizeof(Record) + alive_.capacity() * sizeof(std::uint64_t) +
                (free_.capacity() + released_.capacity() + vertex_tet_.capacity()) * sizeof(TetId);
@@ -65,11 +90,10 @@ protected:
 
     const Record& record(TetId t) const { return records_[t]; }
 
-    TetId allocate(const TetVertices& v) {
+    [[gnu::always_inline]] TetId allocate(const TetVertices& v) {
         TetId t;
         if (!free_.empty()) {
-            t = free_.back();
-            free_.pop_back();
+            t = free_.pop_back();
             records_[t].v = v;
         } else {
             t = static_cast<TetId>(records_.size());
@@ -81,13 +105,12 @@ protected:
         alive_[t >> 6] |= std::uint64_t{1} << (t & 63u);
         ++live_;
         for (VertexId u : v) {
-            if (u == kGhostVertex) {
-                continue;
-            }
-            if (u >= vertex_tet_.size()) {
+            if (u < vertex_tet_.size()) [[likely]] {  // reserve() sized it; the ghost is never below
+                vertex_tet_[u] = t;
+            } else if (u != kGhostVertex) {
                 vertex_tet_.resize(std::max<std::size_t>(u + 1, 2 * vertex_tet_.size()), kNoTet);
+                vertex_tet_[u] = t;
             }
-            vertex_tet_[u] = t;
         }
         return t;
     }
@@ -99,15 +122,17 @@ protected:
     }
 
     void recycle_released() {
-        free_.insert(free_.end(), released_.begin(), released_.end());
+        for (TetId t : released_) {
+            free_.push_back(t);
+        }
         released_.clear();
     }
 
 private:
     std::vector<Record> records_;
     std::vector<std::uint64_t> alive_;  // one bit per slot: small enough to stay in cache
-    std::vector<TetId> free_;
-    std::vector<TetId> released_;  // deleted during the current operation
+    PodStack<TetId> free_;
+    PodStack<TetId> released_;  // deleted during the current operation
     std::vector<TetId> vertex_tet_;
     std::size_t live_ = 0;
 };

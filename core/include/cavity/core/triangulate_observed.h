@@ -84,19 +84,15 @@ void run(const Prepared& prep,
         out.redundant.push_back(geometry.key(v));
     }
     std::sort(out.redundant.begin(), out.redundant.end());
+    out.storage_bytes = storage.bytes();
     out.tets.reserve(storage.live_count());
-    for (TetId t = 0; t < storage.capacity(); ++t) {
-        if (!storage.alive(t)) {
-            continue;
-        }
-        const TetVertices& v = storage.vertices(t);
+    storage.drain([&](const TetVertices& v) {
         if (is_ghost(v)) {
             ++out.hull_triangles;
-            continue;
+        } else {
+            out.tets.push_back({geometry.key(v[0]), geometry.key(v[1]), geometry.key(v[2]), geometry.key(v[3])});
         }
-        out.tets.push_back({geometry.key(v[0]), geometry.key(v[1]), geometry.key(v[2]), geometry.key(v[3])});
-    }
-    out.storage_bytes = storage.bytes();
+    });
     if constexpr (Observer::kCounting) {
         out.counters = *observer.counters();
         if constexpr (requires { storage.probes(); }) {

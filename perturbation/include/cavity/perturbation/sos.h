@@ -3,6 +3,8 @@
 #include <array>
 #include <cstdint>
 
+#include "cavity/predicates/insphere.h"
+#include "cavity/predicates/orient4d.h"
 #include "cavity/predicates/point.h"
 #include "cavity/predicates/sign.h"
 #include "cavity/predicates/stage.h"
@@ -42,14 +44,31 @@ struct SosVerdict {
     std::uint8_t cofactors;
 };
 
+namespace detail {
+
+/// The sign of the perturbed determinant when the exact one is zero: the first nonzero cofactor
+/// in key order (out of line: rare, and kept off the callers' inlined fast path).
+Sign sos_tie(const Point3& a,
+             const Point3& b,
+             const Point3& c,
+             const Point3& d,
+             const Point3& e,
+             const Keys5& keys);
+
+}  // namespace detail
+
 /// insphere under the perturbation: kPos when e is inside the perturbed circumball of a, b, c, d
 /// (positively oriented). Never kZero if a, b, c, d is not flat and the five keys are distinct.
-Sign insphere_sos(const Point3& a,
-                  const Point3& b,
-                  const Point3& c,
-                  const Point3& d,
-                  const Point3& e,
-                  const Keys5& keys);
+/// Inline, so that the exact predicate's filter inlines into the caller's loop.
+inline Sign insphere_sos(const Point3& a,
+                         const Point3& b,
+                         const Point3& c,
+                         const Point3& d,
+                         const Point3& e,
+                         const Keys5& keys) {
+    const Sign exact = predicates::insphere(a, b, c, d, e);
+    return exact != Sign::kZero ? exact : detail::sos_tie(a, b, c, d, e, keys);
+}
 
 SosVerdict insphere_sos_staged(const Point3& a,
                                const Point3& b,
@@ -58,13 +77,21 @@ SosVerdict insphere_sos_staged(const Point3& a,
                                const Point3& e,
                                const Keys5& keys);
 
-/// orient4d (the power test) under the perturbation. Never kZero if a, b, c, d is not flat.
-Sign orient4d_sos(const WeightedPoint3& a,
-                  const WeightedPoint3& b,
-                  const WeightedPoint3& c,
-                  const WeightedPoint3& d,
-                  const WeightedPoint3& e,
-                  const Keys5& keys);
+/// orient4d (the power test) under the perturbation. Never kZero if a, b, c, d is not flat. The
+/// cofactors see only the positions: the tie-break is the same as insphere_sos's.
+inline Sign orient4d_sos(const WeightedPoint3& a,
+                         const WeightedPoint3& b,
+                         const WeightedPoint3& c,
+                         const WeightedPoint3& d,
+                         const WeightedPoint3& e,
+                         const Keys5& keys) {
+    const Sign exact = predicates::orient4d(a, b, c, d, e);
+    if (exact != Sign::kZero) {
+        return exact;
+    }
+    return detail::sos_tie({a.x, a.y, a.z}, {b.x, b.y, b.z}, {c.x, c.y, c.z}, {d.x, d.y, d.z},
+                           {e.x, e.y, e.z}, keys);
+}
 
 SosVerdict orient4d_sos_staged(const WeightedPoint3& a,
                                const WeightedPoint3& b,
