@@ -68,7 +68,7 @@ TEST(Suite, MalformedLinesAreNamedByFileAndLine) {
 }
 
 TEST(Suite, ShippedSuitesParse) {
-    for (const char* name : {"jtets", "creation", "scaling", "walk", "adversarial", "degenerate"}) {
+    for (const char* name : {"jtets", "creation", "scaling", "quadratic", "walk", "adversarial", "degenerate"}) {
         const std::string path = std::string(CAVITY_SUITES_DIR) + "/" + name + ".suite";
         EXPECT_NO_THROW(read_suite(path)) << path;
     }
