@@ -9,8 +9,13 @@
 /// tetrahedra that cavity::core::triangulate returns.
 namespace cavity::python {
 
+using Tet = std::array<std::uint32_t, 4>;
+
 struct Adjacency {
-    /// neighbors[4t + i]: the tetrahedron across the facet opposite vertex i of tetrahedron t, or
+    /// The tetrahedra (input ids, orientation kept), renumbered along the rank order: sorted by
+    /// their lowest-ranked vertex, so that tetrahedra near in space are near in the array.
+    std::vector<Tet> simplices;
+    /// neighbors[4t + i]: the tetrahedron across the facet opposite vertex i of simplices[t], or
     /// -1 on the convex hull (scipy's convention).
     std::vector<std::int32_t> neighbors;
     /// Hull triangles, each counter-clockwise seen from outside the hull.
@@ -19,14 +24,14 @@ struct Adjacency {
     std::vector<std::int32_t> vertex_to_simplex;
 };
 
-/// Matches the facets of `tets` (positively oriented, vertex ids < rank.size()) in O(m) time:
-/// facets are bucketed by their lowest-ranked vertex (counting sort) and paired inside each
-/// bucket, where the two other vertices identify them. `rank` is a permutation of the point ids
-/// along a space-filling curve (the insertion order): tetrahedra near in space then land in
-/// buckets near in memory, which makes the passes cache-friendly (input ids of random points are
-/// random in space). Memory: 12 bytes per half-facet besides the output.
+/// Renumbers `tets` (positively oriented, vertex ids < rank.size()) and matches their facets in
+/// O(m) expected time: facets are bucketed by their lowest-ranked vertex (counting sort) and
+/// paired inside each bucket (hashing), where the two other vertices identify them. `rank` is a permutation of the point
+/// ids along a space-filling curve (the insertion order). Sorting the tetrahedra by rank first
+/// makes every later pass nearly sequential: input ids of random points are random in space, and
+/// the engine's storage slots are recycled, so neither order is local. Memory: 12 bytes per
+/// half-facet and the renumbered copy besides the output.
 /// \throws cavity::core::Error if a triangle has more than two tetrahedra (not a manifold).
-Adjacency build_adjacency(std::span<const std::array<std::uint32_t, 4>> tets,
-                          std::span<const std::uint32_t> rank);
+Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32_t> rank);
 
 }  // namespace cavity::python

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <chrono>
+#include <ctime>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -23,12 +24,25 @@ namespace cavity::python {
 
 namespace {
 
-using Tet = std::array<std::uint32_t, 4>;
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+/// Wall-clock and this thread's CPU time: on a shared machine the CPU time is the steadier one.
+struct Stopwatch {
+    Clock::time_point wall = Clock::now();
+    double cpu = thread_cpu_seconds();
+
+    static double thread_cpu_seconds() {
+        timespec ts{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+        return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+    }
+
+    /// {wall seconds, CPU seconds} since construction.
+    std::pair<double, double> elapsed() const {
+        return {std::chrono::duration<double>(Clock::now() - wall).count(),
+                thread_cpu_seconds() - cpu};
+    }
+};
 
 /// A read-only int32 numpy array that takes ownership of `values` without copying them. T is
 /// std::int32_t, std::uint32_t (ids < 2^31, so the bits are the same) or an array of them.
@@ -46,29 +60,30 @@ py::array_t<std::int32_t> adopt(std::vector<T>&& values, std::vector<py::ssize_t
 struct Built {
     core::Triangulation triangulation;
     Adjacency adjacency;
-    double order_s = 0;
-    double triangulate_s = 0;
-    double adjacency_s = 0;
+    std::pair<double, double> order_s;  ///< {wall, CPU}
+    std::pair<double, double> triangulate_s;
+    std::pair<double, double> adjacency_s;
 };
 
 Built build(const core::PointSet& input,
             const core::OrderOptions& order_options,
             const core::TriangulateOptions& options) {
     Built b;
-    auto start = Clock::now();
+    Stopwatch clock;
     const core::InsertionOrder order = core::make_insertion_order(input.points, order_options);
-    b.order_s = seconds_since(start);
-    start = Clock::now();
+    b.order_s = clock.elapsed();
+    clock = Stopwatch();
     b.triangulation = core::triangulate(input, order.sequence, options);
-    b.triangulate_s = seconds_since(start);
-    start = Clock::now();
+    b.triangulate_s = clock.elapsed();
+    clock = Stopwatch();
     // Rank of each point along the insertion order (a space-filling curve, rounds aside).
     std::vector<std::uint32_t> rank(input.size());
     for (std::size_t r = 0; r < order.sequence.size(); ++r) {
         rank[order.sequence[r]] = static_cast<std::uint32_t>(r);
     }
     b.adjacency = build_adjacency(b.triangulation.tets, rank);
-    b.adjacency_s = seconds_since(start);
+    b.triangulation.tets = {};  // adjacency.simplices holds them, renumbered
+    b.adjacency_s = clock.elapsed();
     return b;
 }
 
@@ -162,14 +177,14 @@ private:
             weights_ = py::none();
         }
         core::Triangulation& t = b.triangulation;
-        const auto m = static_cast<py::ssize_t>(t.tets.size());
+        const auto m = static_cast<py::ssize_t>(b.adjacency.simplices.size());
         const auto hull = static_cast<py::ssize_t>(b.adjacency.hull.size());
         const auto dup = static_cast<py::ssize_t>(t.duplicates.size());
         const auto red = static_cast<py::ssize_t>(t.redundant.size());
 
         py::dict stats = counters_dict(t.counters);
         stats["points"] = input_.size();
-        stats["tets"] = t.tets.size();
+        stats["tets"] = b.adjacency.simplices.size();
         stats["hull_triangles"] = t.hull_triangles;
         stats["storage_bytes"] = t.storage_bytes;
         stats["order"] = order;
@@ -177,13 +192,16 @@ private:
         stats["storage"] = storage;
         stats["seed"] = seed;
         py::dict timings;
-        timings["order_s"] = b.order_s;
-        timings["triangulate_s"] = b.triangulate_s;
-        timings["adjacency_s"] = b.adjacency_s;
+        timings["order_s"] = b.order_s.first;
+        timings["triangulate_s"] = b.triangulate_s.first;
+        timings["adjacency_s"] = b.adjacency_s.first;
+        timings["order_cpu_s"] = b.order_s.second;
+        timings["triangulate_cpu_s"] = b.triangulate_s.second;
+        timings["adjacency_cpu_s"] = b.adjacency_s.second;
         stats["timings"] = timings;
         stats_ = stats;
 
-        simplices_ = adopt(std::move(t.tets), {m, 4});
+        simplices_ = adopt(std::move(b.adjacency.simplices), {m, 4});
         neighbors_ = adopt(std::move(b.adjacency.neighbors), {m, 4});
         convex_hull_ = adopt(std::move(b.adjacency.hull), {hull, 3});
         vertex_to_simplex_ = adopt(std::move(b.adjacency.vertex_to_simplex), {n});
@@ -243,7 +261,7 @@ triangulating.
         .def_readonly("redundant", &Delaunay::redundant_,
                       "(r,) int32: weighted points that are not vertices, increasing")
         .def_readonly("stats", &Delaunay::stats_,
-                      "dict: instrumentation counters, stage_calls and timings (seconds)")
+                      "dict: instrumentation counters, stage_calls and timings (wall and CPU seconds)")
         .def_property_readonly("nsimplex", [](const Delaunay& d) { return d.simplices_.shape(0); })
         .def_property_readonly("npoints", [](const Delaunay& d) { return d.points_.shape(0); })
         .def_property_readonly("ndim", [](const Delaunay&) { return 3; })
