@@ -9,9 +9,11 @@ namespace cavity::predicates {
 
 /// The stage of the evaluation pipeline that decided a predicate's sign.
 ///  - kFilter:   the floating-point determinant with a certified error bound (inputs in range);
-///  - kAdaptive: expansion arithmetic (error-free transformations) on the input differences;
-///  - kExact:    exact integer arithmetic, for inputs the first two stages cannot settle or whose
-///               intermediate products would overflow or underflow a double.
+///  - kAdaptive: Shewchuk's stages B and C: the exact expansion of the determinant of the rounded
+///               input differences, then (when a difference was inexact) that plus the first-order
+///               terms of the difference tails in doubles, under a certified bound;
+///  - kExact:    the exact determinant: expansions of the two-component differences, or GMP
+///               integers for inputs whose exponents spread too wide for expansions.
 enum class Stage : std::uint8_t { kFilter = 0, kAdaptive = 1, kExact = 2 };
 
 inline constexpr int kStageCount = 3;
