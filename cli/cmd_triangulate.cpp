@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cavity/core/atomic_file.h"
 #include "cavity/core/error.h"
@@ -12,6 +13,7 @@
 #include "cavity/core/point_io.h"
 #include "cavity/core/triangulate.h"
 #include "cavity/core/validate.h"
+#include "cavity/core/vertex_deletion.h"
 #include "commands.h"
 #include "json_writer.h"
 #include "progress_bar.h"
@@ -28,6 +30,7 @@ struct TriangulateArgs {
     std::string storage = "array";
     std::string format = "tetgen";
     std::string stats;
+    std::vector<std::uint64_t> delete_ids;
     std::uint64_t seed = 0;
     double brio_ratio = 0.5;
     bool no_reverse_rounds = false;
@@ -80,6 +83,7 @@ struct Timings {
     double read_s = 0;
     double order_s = 0;
     double triangulate_s = 0;
+    double delete_s = 0;
     double check_s = 0;
     double write_s = 0;
 };
@@ -101,6 +105,7 @@ void write_stats(const TriangulateArgs& args,
     json.number("read_s", timings.read_s);
     json.number("order_s", timings.order_s);
     json.number("triangulate_s", timings.triangulate_s);
+    json.number("delete_s", timings.delete_s);
     json.number("check_s", timings.check_s);
     json.number("write_s", timings.write_s);
     json.end_object();
@@ -156,6 +161,29 @@ void report_skipped(const core::PointSet& points, const core::Triangulation& tri
     }
 }
 
+/// --delete: removes the listed points (numbered like the input) from the triangulation by
+/// vertex deletion (gift-wrapping each star), keeping the instrumentation counters.
+std::vector<std::uint32_t> zero_based(const core::PointSet& points,
+                                      const std::vector<std::uint64_t>& listed) {
+    std::vector<std::uint32_t> ids;
+    for (std::uint64_t id : listed) {
+        const auto base = static_cast<std::uint64_t>(points.index_base);
+        if (id < base || id - base >= points.size()) {
+            throw core::Error("--delete: point " + std::to_string(id) + " is not in " + points.source);
+        }
+        ids.push_back(static_cast<std::uint32_t>(id - base));
+    }
+    return ids;
+}
+
+core::Triangulation delete_listed(const core::PointSet& points,
+                                  const core::Triangulation& tri,
+                                  const std::vector<std::uint64_t>& listed) {
+    core::Triangulation result = core::delete_vertices(points, tri, zero_based(points, listed));
+    result.counters = tri.counters;
+    return result;
+}
+
 void run_triangulate(const TriangulateArgs& args) {
     Timings timings;
     auto clock = std::chrono::steady_clock::now();
@@ -179,7 +207,7 @@ void run_triangulate(const TriangulateArgs& args) {
     ProgressBar bar("triangulating", !args.quiet);
     options.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
     clock = std::chrono::steady_clock::now();
-    const core::Triangulation tri = [&] {
+    core::Triangulation tri = [&] {
         try {
             return core::triangulate(points, order.sequence, options);
         } catch (const core::Error& e) {
@@ -187,11 +215,17 @@ void run_triangulate(const TriangulateArgs& args) {
         }
     }();
     timings.triangulate_s = seconds_since(clock);
+    if (!args.delete_ids.empty()) {
+        clock = std::chrono::steady_clock::now();
+        tri = delete_listed(points, tri, args.delete_ids);
+        timings.delete_s = seconds_since(clock);
+    }
     report_skipped(points, tri);
 
     if (args.check) {
         clock = std::chrono::steady_clock::now();
-        const core::ValidationReport report = core::validate(points, tri.tets);
+        const core::ValidationReport report =
+            core::validate(points, tri.tets, zero_based(points, args.delete_ids));
         timings.check_s = seconds_since(clock);
         if (!report.ok()) {
             std::string message = "validation failed (" + std::to_string(report.problem_count) +
@@ -247,6 +281,10 @@ void add_triangulate_command(CLI::App& app) {
                   "BRIO: do not reverse the curve order on alternate rounds");
     cmd->add_flag("--weighted", args->weighted,
                   "weighted Delaunay: the first .node attribute (or 4th column) is the weight");
+    cmd->add_option("--delete", args->delete_ids,
+                    "after triangulating, delete these points (input numbering, comma-separated) "
+                    "by vertex deletion")
+        ->delimiter(',');
     cmd->add_flag("--check", args->check, "validate the result exactly before writing it");
     cmd->add_option("--stats", args->stats,
                     "write timings, counts and instrumentation counters as JSON");

@@ -40,9 +40,18 @@ bool sorted_is_even(std::array<std::uint32_t, 3>& v) {
 
 class Validator {
 public:
-    Validator(const PointSet& points, std::span<const std::array<std::uint32_t, 4>> tets)
+    Validator(const PointSet& points,
+              std::span<const std::array<std::uint32_t, 4>> tets,
+              std::span<const std::uint32_t> absent)
         : points_(points)
-        , tets_(tets) {}
+        , tets_(tets)
+        , absent_(points.size(), 0) {
+        for (std::uint32_t a : absent) {
+            if (a < absent_.size()) {
+                absent_[a] = 1;
+            }
+        }
+    }
 
     ValidationReport run() {
         report_.tets = tets_.size();
@@ -268,6 +277,12 @@ private:
         const auto first = first_occurrences(points_.points, points_.weights);
         std::vector<std::uint32_t> missing;
         for (std::uint32_t i = 0; i < points_.size(); ++i) {
+            if (absent_[i] != 0) {
+                if (used_[i] != 0) {
+                    problem("point " + std::to_string(i) + " was deleted but is a vertex");
+                }
+                continue;
+            }
             if (used_[i] != 0) {
                 if (first[i] != i && used_[first[i]] != 0) {
                     problem("points " + std::to_string(first[i]) + " and " + std::to_string(i) +
@@ -322,6 +337,7 @@ private:
 
     const PointSet& points_;
     std::span<const std::array<std::uint32_t, 4>> tets_;
+    std::vector<unsigned char> absent_;
     std::vector<unsigned char> used_;
     std::vector<FaceRecord> faces_;
     std::size_t triangles_ = 0;
@@ -330,8 +346,10 @@ private:
 
 }  // namespace
 
-ValidationReport validate(const PointSet& points, std::span<const std::array<std::uint32_t, 4>> tets) {
-    return Validator(points, tets).run();
+ValidationReport validate(const PointSet& points,
+                          std::span<const std::array<std::uint32_t, 4>> tets,
+                          std::span<const std::uint32_t> absent) {
+    return Validator(points, tets, absent).run();
 }
 
 }  // namespace cavity::core

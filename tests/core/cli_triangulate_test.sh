@@ -68,6 +68,15 @@ printf '9 3 1 0\n0 0 0 0 0\n1 4 0 0 0\n2 0 4 0 0\n3 0 0 4 0\n4 4 4 4 0\n5 1 1 1 
 grep -q "redundant" err.txt || fail "weighted: redundant points not reported"
 "$cavity" check w.node w.ele --weighted --quiet || fail "weighted: check rejects"
 
+# --delete: the result is the (exactly checked) triangulation of the other points; the deleted
+# ones are gone. (That it equals triangulating without them is tested in tests/cdt.)
+"$cavity" generate grid 125 -o grid.node >/dev/null
+"$cavity" triangulate grid.node -o deleted --delete 0,7,62,124 --check --quiet || fail "delete: failed"
+awk 'NR>1 && !/^#/ {for (i=2;i<=5;i++) if ($i==0 || $i==7 || $i==62 || $i==124) bad=1} END {exit bad}' deleted.ele \
+  || fail "delete: a deleted point is still a vertex"
+"$cavity" triangulate grid.node -o bad_delete --delete 125 --quiet 2>err.txt && fail "delete: out-of-range id accepted"
+grep -q "not in" err.txt || fail "delete: message '$(cat err.txt)'"
+
 # VTU output.
 "$cavity" triangulate cube.node -o cube --format vtu --quiet || fail "vtu: failed"
 grep -q "UnstructuredGrid" cube.vtu || fail "vtu: not a VTK XML file"

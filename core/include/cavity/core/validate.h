@@ -37,8 +37,10 @@ struct ValidationReport {
 ///    every pair of coplanar hull triangles within their plane: locally Delaunay everywhere
 ///    implies Delaunay;
 ///  - every point is a vertex, or repeats a vertex (same coordinates, and same weight when
-///    weighted), or (weighted) is redundant: not in conflict with any tetrahedron around it.
+///    weighted), or (weighted) is redundant: not in conflict with any tetrahedron around it, or is
+///    listed in `absent` (deleted points: they must not be vertices, and no check involves them).
 ValidationReport validate(const PointSet& points,
-                          std::span<const std::array<std::uint32_t, 4>> tets);
+                          std::span<const std::array<std::uint32_t, 4>> tets,
+                          std::span<const std::uint32_t> absent = {});
 
 }  // namespace cavity::core
