@@ -1,0 +1,32 @@
+#!/usr/bin/python3
+"""Using cavity from Python: the snippet of docs/api.md, run by ctest (python.quickstart)."""
+
+import numpy as np
+
+import cavity
+
+# A degenerate input: a 5 x 5 x 5 grid, where every unit cube's 8 corners are cospherical.
+axis = np.arange(5.0)
+points = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)
+
+tri = cavity.Delaunay(points)  # order="brio", locate="walk", seed=0
+print(tri)                     # <cavity.Delaunay: 125 points, ... tetrahedra>
+
+# scipy's attributes: simplices (positively oriented), neighbors (-1 on the hull), convex_hull...
+p = points[tri.simplices]
+assert np.all(cavity.orient3d(p[:, 0], p[:, 1], p[:, 2], p[:, 3]) == 1)  # no flat tetrahedron
+assert (tri.neighbors == -1).sum() == len(tri.convex_hull)
+
+# ... and cavity's own: the exact validator and the work the run did.
+assert tri.check()
+print("tetrahedra created:", tri.stats["tets_created"],
+      "| insphere calls settled by the filter:", tri.stats["stage_calls"]["insphere"]["filter"],
+      "| perturbations:", tri.stats["perturbations"])
+
+# Bad input is a ValueError naming the row.
+bad = points.copy()
+bad[7, 1] = np.nan
+try:
+    cavity.Delaunay(bad)
+except ValueError as error:
+    print("ValueError:", error)  # points row 7 has a non-finite value (nan) in column 1
