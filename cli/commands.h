@@ -10,6 +10,7 @@ void add_sign_command(CLI::App& app);
 void add_generate_command(CLI::App& app);
 void add_triangulate_command(CLI::App& app);
 void add_check_command(CLI::App& app);
+void add_cdt_command(CLI::App& app);
 void add_jtets_command(CLI::App& app);
 void add_experiment_command(CLI::App& app);
 

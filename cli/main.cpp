@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     cavity::cli::add_generate_command(app);
     cavity::cli::add_triangulate_command(app);
     cavity::cli::add_check_command(app);
+    cavity::cli::add_cdt_command(app);
     cavity::cli::add_jtets_command(app);
     cavity::cli::add_experiment_command(app);
     try {

@@ -1,4 +1,5 @@
-# Flips, gift-wrapping and vertex deletion (Cheng, Dey & Shewchuk §4.4, §5.6).
+# Flips, gift-wrapping, vertex deletion (Cheng, Dey & Shewchuk §4.4, §5.6) and constrained
+# Delaunay tetrahedralizations of PLCs (§5.8).
 target_sources(cavity_core PRIVATE
   src/star.cpp
   src/replace_tetrahedra.cpp
@@ -7,4 +8,12 @@ target_sources(cavity_core PRIVATE
   src/gift_wrap_engine.cpp
   src/gift_wrap.cpp
   src/vertex_deletion.cpp
+  src/exact_plane.cpp
+  src/read_poly.cpp
+  src/edge_protection.cpp
+  src/polygon_insertion.cpp
+  src/cdt_validate.cpp
+  src/cdt.cpp
 )
+# Exact event times and facet geometry of polygon insertion.
+target_link_libraries(cavity_core PRIVATE cavity::gmp Boost::headers)

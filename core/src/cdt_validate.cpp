@@ -1,0 +1,185 @@
+#include "cavity/core/cdt_validate.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "cavity/core/complex_from_tets.h"
+#include "cavity/core/edge_protection.h"
+#include "cavity/core/error.h"
+#include "cavity/perturbation/sos.h"
+#include "exact_plane.h"
+
+namespace cavity::core {
+
+namespace {
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+class Report {
+public:
+    explicit Report(CdtValidation& out) : out_(out) {}
+    void add(std::string what) {
+        if (out_.problems.size() < 20) {
+            out_.problems.push_back(std::move(what));
+        }
+        ++out_.problem_count;
+    }
+
+private:
+    CdtValidation& out_;
+};
+
+std::string tet_name(const std::array<std::uint32_t, 4>& t, int base) {
+    std::string s = "tetrahedron";
+    for (std::uint32_t v : t) {
+        s += " " + std::to_string(v + static_cast<std::uint32_t>(base));
+    }
+    return s;
+}
+
+/// The facet's triangles among the mesh triangles lying in its plane, after checking that no
+/// tetrahedron crosses it and that they cover its area.
+std::vector<Triangle> polygon_faces(const Plc& plc, std::size_t index,
+                                    std::span<const std::array<std::uint32_t, 4>> tets,
+                                    const std::set<Triangle>& triangles, Report& report) {
+    const PlcFacet& facet = plc.facets[index];
+    const std::string name = "facet " + std::to_string(index + static_cast<std::size_t>(plc.points.index_base));
+    const auto plane = ExactPlane::of_facet(plc, facet);
+    std::vector<Triangle> faces;
+    if (!plane) {
+        report.add(name + ": corners are collinear");
+        return faces;
+    }
+    const auto& pts = plc.points.points;
+    for (const auto& t : tets) {
+        std::array<int, 4> s{};
+        for (std::size_t i = 0; i < 4; ++i) {
+            s[i] = static_cast<int>(plane->side(pts[t[i]]));
+        }
+        for (std::size_t i = 0; i < 4; ++i) {
+            for (std::size_t j = 0; j < 4; ++j) {
+                if (s[i] < 0 && s[j] > 0) {
+                    if (in_facet_region(plc, facet, *plane, plane->crossing(pts[t[i]], pts[t[j]]))) {
+                        report.add(tet_name(t, plc.points.index_base) + " crosses " + name);
+                    }
+                    i = j = 4;
+                    break;
+                }
+            }
+        }
+    }
+    Rational covered = 0;
+    for (const Triangle& g : triangles) {
+        if (plane->side(pts[g[0]]) != Sign::kZero || plane->side(pts[g[1]]) != Sign::kZero ||
+            plane->side(pts[g[2]]) != Sign::kZero) {
+            continue;
+        }
+        const ExactPoint a = exact_point(pts[g[0]]);
+        const ExactPoint b = exact_point(pts[g[1]]);
+        const ExactPoint c = exact_point(pts[g[2]]);
+        const ExactPoint centroid{(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3,
+                                  (a[2] + b[2] + c[2]) / 3};
+        if (in_facet_region(plc, facet, *plane, centroid)) {
+            faces.push_back(g);
+            covered += triangle_area2(*plane, pts[g[0]], pts[g[1]], pts[g[2]]);
+        }
+    }
+    if (covered != facet_region_area2(plc, facet, *plane)) {
+        report.add(name + " is not a union of mesh triangles (their area differs from its area)");
+    }
+    return faces;
+}
+
+}  // namespace
+
+CdtValidation validate_cdt(const Plc& plc, std::span<const std::array<std::uint32_t, 4>> tets) {
+    CdtValidation result;
+    Report report(result);
+    const int base = plc.points.index_base;
+    for (const auto& t : tets) {
+        for (std::uint32_t v : t) {
+            if (v >= plc.points.size()) {
+                report.add(tet_name(t, base) + " names a point that does not exist");
+                return result;
+            }
+        }
+    }
+    const Geometry geometry = geometry_by_index(plc.points);
+    ArrayStorage storage;
+    try {
+        storage = complex_from_tets(tets);
+    } catch (const Error& e) {
+        report.add(e.what());
+        return result;
+    }
+    for (const std::string& p : check_complex(storage, geometry)) {
+        report.add(p);
+    }
+    std::vector<bool> used(plc.points.size(), false);
+    for (const auto& t : tets) {
+        for (std::uint32_t v : t) {
+            used[v] = true;
+        }
+    }
+    for (std::size_t v = 0; v < used.size(); ++v) {
+        if (!used[v]) {
+            report.add("point " + std::to_string(v + static_cast<std::size_t>(base)) +
+                       " is not a vertex");
+        }
+    }
+    for (const Edge& e : unprotected_edges(plc, tets)) {
+        report.add("PLC edge " + std::to_string(e[0] + static_cast<std::uint32_t>(base)) + "-" +
+                   std::to_string(e[1] + static_cast<std::uint32_t>(base)) +
+                   " is not an edge of the mesh");
+    }
+    if (!result.ok()) {
+        return result;
+    }
+    std::set<Triangle> triangles;
+    for (const auto& t : tets) {
+        for (int f = 0; f < 4; ++f) {
+            const auto g = facet_vertices(t, f);
+            Triangle s{g[0], g[1], g[2]};
+            std::sort(s.begin(), s.end());
+            triangles.insert(s);
+        }
+    }
+    std::set<Triangle> constrained;
+    for (std::size_t f = 0; f < plc.facets.size(); ++f) {
+        for (const Triangle& g : polygon_faces(plc, f, tets, triangles, report)) {
+            constrained.insert(g);
+        }
+    }
+    result.polygon_triangles = constrained.size();
+    for (TetId t = 0; t < storage.capacity(); ++t) {
+        if (!storage.alive(t) || is_ghost(storage.vertices(t))) {
+            continue;
+        }
+        const TetVertices& v = storage.vertices(t);
+        for (int f = 0; f < 4; ++f) {
+            const HalfFacet h = storage.adjacent(t, f);
+            if (h == kNoHalfFacet || is_ghost(storage.vertices(tet_of(h)))) {
+                continue;
+            }
+            const TetVertices& w = storage.vertices(tet_of(h));
+            Triangle g = facet_vertices(v, f);
+            std::sort(g.begin(), g.end());
+            if (constrained.contains(g)) {
+                continue;
+            }
+            const VertexId q = w[static_cast<std::size_t>(facet_of(h))];
+            const auto& p = plc.points.points;
+            if (perturbation::insphere_sos(p[v[0]], p[v[1]], p[v[2]], p[v[3]], p[q],
+                                           {v[0], v[1], v[2], v[3], q}) == Sign::kPos) {
+                report.add("triangle " + std::to_string(g[0] + static_cast<std::uint32_t>(base)) +
+                           " " + std::to_string(g[1] + static_cast<std::uint32_t>(base)) + " " +
+                           std::to_string(g[2] + static_cast<std::uint32_t>(base)) +
+                           " is in no polygon and not locally Delaunay");
+            }
+        }
+    }
+    return result;
+}
+
+}  // namespace cavity::core

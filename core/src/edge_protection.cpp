@@ -1,0 +1,124 @@
+#include "cavity/core/edge_protection.h"
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+#include "cavity/core/error.h"
+#include "cavity/core/triangulate.h"
+#include "exact_plane.h"
+
+namespace cavity::core {
+
+namespace {
+
+std::vector<std::array<std::uint32_t, 4>> delaunay_of(const Plc& plc) {
+    std::vector<std::uint32_t> sequence(plc.points.size());
+    std::iota(sequence.begin(), sequence.end(), 0u);
+    Triangulation dt = triangulate(plc.points, sequence, TriangulateOptions{});
+    if (!dt.duplicates.empty()) {
+        const auto& d = dt.duplicates.front();
+        throw Error(located_message(plc.source, std::nullopt,
+                                    "points " + std::to_string(d[0] + plc.points.index_base) +
+                                        " and " + std::to_string(d[1] + plc.points.index_base) +
+                                        " coincide"));
+    }
+    return std::move(dt.tets);
+}
+
+/// The midpoint of a and b when it is exactly representable.
+std::optional<Point3> exact_midpoint(const Point3& a, const Point3& b) {
+    const Point3 m{0.5 * a.x + 0.5 * b.x, 0.5 * a.y + 0.5 * b.y, 0.5 * a.z + 0.5 * b.z};
+    const ExactPoint ea = exact_point(a);
+    const ExactPoint eb = exact_point(b);
+    const ExactPoint em = exact_point(m);
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (2 * em[k] != ea[k] + eb[k]) {
+            return std::nullopt;
+        }
+    }
+    return m;
+}
+
+void split_edge(Plc& plc, const Edge& e, std::uint32_t m) {
+    for (auto& s : plc.segments) {
+        if (std::min(s[0], s[1]) == e[0] && std::max(s[0], s[1]) == e[1]) {
+            const std::uint32_t other = s[1];
+            s[1] = m;
+            plc.segments.push_back({m, other});
+        }
+    }
+    for (auto& facet : plc.facets) {
+        for (auto& loop : facet.loops) {
+            for (std::size_t i = 0; i < loop.size(); ++i) {
+                const std::uint32_t p = loop[i];
+                const std::uint32_t q = loop[(i + 1) % loop.size()];
+                if (std::min(p, q) == e[0] && std::max(p, q) == e[1]) {
+                    loop.insert(loop.begin() + static_cast<std::ptrdiff_t>(i + 1), m);
+                    ++i;
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+
+std::vector<Edge> unprotected_edges(const Plc& plc, std::span<const std::array<std::uint32_t, 4>> tets) {
+    std::vector<Edge> present;
+    present.reserve(tets.size() * 6);
+    for (const auto& t : tets) {
+        for (std::size_t i = 0; i < 4; ++i) {
+            for (std::size_t j = i + 1; j < 4; ++j) {
+                present.push_back({std::min(t[i], t[j]), std::max(t[i], t[j])});
+            }
+        }
+    }
+    std::sort(present.begin(), present.end());
+    std::vector<Edge> missing;
+    for (const Edge& e : plc_edges(plc)) {
+        if (!std::binary_search(present.begin(), present.end(), e)) {
+            missing.push_back(e);
+        }
+    }
+    return missing;
+}
+
+std::vector<Edge> unprotected_edges(const Plc& plc) {
+    return unprotected_edges(plc, delaunay_of(plc));
+}
+
+Protection protect_edges(Plc& plc, std::size_t max_points) {
+    Protection result;
+    for (;;) {
+        ++result.rounds;
+        const std::vector<Edge> missing = unprotected_edges(plc);
+        if (missing.empty()) {
+            return result;
+        }
+        for (const Edge& e : missing) {
+            const auto& a = plc.points.points[e[0]];
+            const auto& b = plc.points.points[e[1]];
+            const auto m = exact_midpoint(a, b);
+            const std::string name = "edge " + std::to_string(e[0] + plc.points.index_base) + "-" +
+                                     std::to_string(e[1] + plc.points.index_base);
+            if (!m) {
+                throw Error(located_message(plc.source, std::nullopt,
+                                            name + " needs a split, but its midpoint is not "
+                                                   "exactly representable"));
+            }
+            if (result.inserted.size() >= max_points) {
+                throw Error(located_message(plc.source, std::nullopt,
+                                            "still not edge-protected after inserting " +
+                                                std::to_string(max_points) + " points (" + name +
+                                                ")"));
+            }
+            const auto id = static_cast<std::uint32_t>(plc.points.size());
+            plc.points.points.push_back(*m);
+            result.inserted.push_back(id);
+            split_edge(plc, e, id);
+        }
+    }
+}
+
+}  // namespace cavity::core

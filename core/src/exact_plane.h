@@ -1,0 +1,62 @@
+#pragma once
+
+// Exact rational geometry of PLC facets (Boost.Multiprecision over GMP): the plane of a facet,
+// which side of it a vertex lies on, where an edge crosses it, and whether a point of the plane
+// lies in the facet's region. Used by the reader (coplanarity), polygon insertion and the CDT
+// validator; never on a hot path of Delaunay triangulation.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <boost/multiprecision/gmp.hpp>
+
+#include "cavity/core/plc.h"
+#include "cavity/predicates/sign.h"
+
+namespace cavity::core {
+
+using Rational = boost::multiprecision::mpq_rational;
+using ExactPoint = std::array<Rational, 3>;
+
+ExactPoint exact_point(const Point3& p);
+
+/// The plane through three non-collinear points a, b, c, with normal n = (b - a) x (c - a).
+class ExactPlane {
+public:
+    /// The plane of a facet: through its first three non-collinear loop corners; nullopt when every
+    /// corner is collinear.
+    static std::optional<ExactPlane> of_facet(const Plc& plc, const PlcFacet& facet);
+
+    /// n . (p - a): positive on the side n points to. Proportional to the signed distance, without
+    /// radicals (the chapter's advice for d(v, h) in §5.8).
+    Rational offset(const Point3& p) const;
+    predicates::Sign side(const Point3& p) const;
+    /// The point where segment pq meets the plane (p and q strictly on opposite sides).
+    ExactPoint crossing(const Point3& p, const Point3& q) const;
+    /// The coordinate dropped to project the plane one-to-one onto a coordinate plane: the axis of
+    /// the largest normal component.
+    int dropped_axis() const { return drop_; }
+
+private:
+    ExactPoint a_;
+    ExactPoint n_;
+    int drop_ = 2;
+};
+
+/// True when x (a point of the facet's plane, not on any loop side) lies in the facet's region: in
+/// some loop and in no loop that holds a hole point. Exact crossing-number tests in the projection
+/// that drops `plane.dropped_axis()`.
+bool in_facet_region(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane,
+                     const ExactPoint& x);
+
+/// Twice the area of the facet's region, measured in the projection (exact): the loops' absolute
+/// areas with the hole rule applied loop by loop (a loop holding a hole point counts negative).
+Rational facet_region_area2(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane);
+
+/// Twice the absolute area of triangle abc in the same projection.
+Rational triangle_area2(const ExactPlane& plane, const Point3& a, const Point3& b, const Point3& c);
+
+}  // namespace cavity::core

@@ -1,0 +1,246 @@
+#include <algorithm>
+#include <string>
+
+#include "cavity/core/error.h"
+#include "cavity/core/plc.h"
+#include "exact_plane.h"
+#include "point_readers.h"
+#include "text_input.h"
+
+namespace cavity::core {
+
+namespace {
+
+/// Reads the lines of one .poly file in order, failing with FILE:LINE.
+class PolyParser {
+public:
+    PolyParser(const std::string& file, std::string_view bytes) : source_(file), lines_(bytes) {}
+
+    /// The fields of the next data line; `what` says what was expected, for the truncation error.
+    std::vector<std::string_view> next(const std::string& what) {
+        if (!lines_.next()) {
+            source_.fail(what.empty() ? "file ends early" : "file ends before " + what);
+        }
+        return split_whitespace(lines_.text());
+    }
+    bool more() {
+        if (!lines_.next()) {
+            return false;
+        }
+        pending_ = true;
+        return true;
+    }
+    std::vector<std::string_view> next_or_pending(const std::string& what) {
+        if (pending_) {
+            pending_ = false;
+            return split_whitespace(lines_.text());
+        }
+        return next(what);
+    }
+    std::size_t line() const { return lines_.number(); }
+    const TextSource& source() const { return source_; }
+
+    std::uint64_t count(std::string_view token, std::string_view what) const {
+        return source_.count(token, line(), what);
+    }
+    double number(std::string_view token, std::string_view what) const {
+        return source_.number(token, line(), what);
+    }
+    [[noreturn]] void fail(const std::string& what) const { source_.fail(line(), what); }
+
+private:
+    TextSource source_;
+    LineReader lines_;
+    bool pending_ = false;
+};
+
+void read_points_part(PolyParser& in, Plc& plc, const std::filesystem::path& file) {
+    const auto header = in.next("the point header");
+    if (header.empty() || header.size() > 4) {
+        in.fail("the point header needs 1 to 4 fields");
+    }
+    const std::uint64_t count = in.count(header[0], "number of points");
+    const std::uint64_t dim = header.size() > 1 ? in.count(header[1], "dimension") : 3;
+    const std::uint64_t attributes =
+        header.size() > 2 ? in.count(header[2], "number of attributes") : 0;
+    const std::uint64_t markers = header.size() > 3 ? in.count(header[3], "number of markers") : 0;
+    if (dim != 3) {
+        in.fail("dimension is " + std::to_string(dim) + ", expected 3");
+    }
+    if (markers > 1) {
+        in.fail("number of boundary markers must be 0 or 1");
+    }
+    if (count == 0) {
+        // TetGen: the points are in the .node file beside the .poly.
+        std::filesystem::path node = file;
+        node.replace_extension(".node");
+        plc.points = read_node(node.string(), read_file_bytes(node), false);
+        return;
+    }
+    if (count > 0xFFFF'FFFFu) {
+        in.fail("more points than 32-bit indices can number");
+    }
+    plc.points.source = plc.source;
+    for (std::uint64_t i = 0; i < count; ++i) {
+        const auto tokens = in.next(std::to_string(count) + " points (found " + std::to_string(i) +
+                                    ")");
+        if (tokens.size() != 4 + attributes + markers) {
+            in.fail("expected " + std::to_string(4 + attributes + markers) + " fields, found " +
+                    std::to_string(tokens.size()));
+        }
+        const std::uint64_t index = in.count(tokens[0], "point index");
+        if (i == 0) {
+            if (index > 1) {
+                in.fail("the first point index must be 0 or 1, found " + std::to_string(index));
+            }
+            plc.points.index_base = static_cast<int>(index);
+        } else if (index != plc.points.index_base + i) {
+            in.fail("point index " + std::to_string(index) + " out of sequence, expected " +
+                    std::to_string(plc.points.index_base + i));
+        }
+        plc.points.points.push_back({in.number(tokens[1], "x"), in.number(tokens[2], "y"),
+                                     in.number(tokens[3], "z")});
+    }
+}
+
+/// A corner reference in the file's numbering, as a 0-based index.
+std::uint32_t corner(PolyParser& in, const Plc& plc, std::string_view token) {
+    const std::uint64_t c = in.count(token, "corner index");
+    const auto base = static_cast<std::uint64_t>(plc.points.index_base);
+    if (c < base || c - base >= plc.points.size()) {
+        in.fail("corner " + std::string(token) + " is not a point index (points are numbered " +
+                std::to_string(base) + " to " + std::to_string(base + plc.points.size() - 1) + ")");
+    }
+    return static_cast<std::uint32_t>(c - base);
+}
+
+Point3 hole_point(PolyParser& in, const std::vector<std::string_view>& tokens) {
+    if (tokens.size() != 4) {
+        in.fail("a hole is `<index> x y z`, found " + std::to_string(tokens.size()) + " fields");
+    }
+    return {in.number(tokens[1], "x"), in.number(tokens[2], "y"), in.number(tokens[3], "z")};
+}
+
+void check_facet(PolyParser& in, const Plc& plc, const PlcFacet& facet, std::uint64_t index) {
+    const std::string name = "facet " + std::to_string(index) + " (line " +
+                             std::to_string(facet.line) + ")";
+    const auto plane = ExactPlane::of_facet(plc, facet);
+    if (!plane && !facet.loops.empty()) {
+        in.source().fail(facet.line, name + ": its corners are collinear");
+    }
+    for (const auto& loop : facet.loops) {
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            if (plane->side(plc.points.points[loop[i]]) != predicates::Sign::kZero) {
+                in.source().fail(facet.line, name + ": corner " +
+                                                 std::to_string(loop[i] + plc.points.index_base) +
+                                                 " is not in the plane of the facet");
+            }
+            const auto& p = plc.points.points[loop[i]];
+            const auto& q = plc.points.points[loop[(i + 1) % loop.size()]];
+            if (p.x == q.x && p.y == q.y && p.z == q.z) {
+                in.source().fail(facet.line, name + ": a loop has two equal consecutive corners");
+            }
+        }
+    }
+    for (const Point3& h : facet.holes) {
+        if (plane && plane->side(h) != predicates::Sign::kZero) {
+            in.source().fail(facet.line, name + ": a hole point is not in the plane of the facet");
+        }
+    }
+}
+
+void read_facets_part(PolyParser& in, Plc& plc) {
+    const auto header = in.next("the facet header");
+    if (header.empty() || header.size() > 2) {
+        in.fail("the facet header is `<#facets> [<markers 0|1>]`");
+    }
+    const std::uint64_t count = in.count(header[0], "number of facets");
+    const bool markers = header.size() > 1 && in.count(header[1], "markers") != 0;
+    for (std::uint64_t f = 0; f < count; ++f) {
+        const auto fh = in.next("facet " + std::to_string(f));
+        if (fh.empty() || fh.size() > 3) {
+            in.fail("a facet header is `<#polygons> [<#holes> [<marker>]]`");
+        }
+        PlcFacet facet;
+        facet.line = in.line();
+        const std::uint64_t polygons = in.count(fh[0], "number of polygons");
+        const std::uint64_t holes = fh.size() > 1 ? in.count(fh[1], "number of holes") : 0;
+        if (markers && fh.size() > 2) {
+            facet.marker = static_cast<int>(in.count(fh[2], "facet marker"));
+        }
+        for (std::uint64_t p = 0; p < polygons; ++p) {
+            const auto tokens = in.next("polygon " + std::to_string(p) + " of a facet");
+            const std::uint64_t corners = in.count(tokens[0], "number of corners");
+            if (tokens.size() != corners + 1) {
+                in.fail("the polygon declares " + std::to_string(corners) + " corners but lists " +
+                        std::to_string(tokens.size() - 1));
+            }
+            std::vector<std::uint32_t> loop;
+            for (std::size_t c = 1; c < tokens.size(); ++c) {
+                loop.push_back(corner(in, plc, tokens[c]));
+            }
+            if (corners == 2) {
+                if (loop[0] == loop[1]) {
+                    in.fail("a segment joins a point to itself");
+                }
+                plc.segments.push_back({loop[0], loop[1]});
+            } else if (corners >= 3) {
+                auto sorted = loop;
+                std::sort(sorted.begin(), sorted.end());
+                if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+                    in.fail("a polygon lists a corner twice");
+                }
+                facet.loops.push_back(std::move(loop));
+            }
+        }
+        for (std::uint64_t h = 0; h < holes; ++h) {
+            facet.holes.push_back(hole_point(in, in.next("a facet hole")));
+        }
+        check_facet(in, plc, facet, f + static_cast<std::uint64_t>(plc.points.index_base));
+        if (!facet.loops.empty()) {
+            plc.facets.push_back(std::move(facet));
+        }
+    }
+}
+
+}  // namespace
+
+std::vector<std::array<std::uint32_t, 2>> plc_edges(const Plc& plc) {
+    std::vector<std::array<std::uint32_t, 2>> edges;
+    const auto add = [&](std::uint32_t a, std::uint32_t b) {
+        edges.push_back({std::min(a, b), std::max(a, b)});
+    };
+    for (const auto& s : plc.segments) {
+        add(s[0], s[1]);
+    }
+    for (const auto& facet : plc.facets) {
+        for (const auto& loop : facet.loops) {
+            for (std::size_t i = 0; i < loop.size(); ++i) {
+                add(loop[i], loop[(i + 1) % loop.size()]);
+            }
+        }
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    return edges;
+}
+
+Plc read_poly(const std::filesystem::path& file) {
+    const std::string bytes = read_file_bytes(file);
+    PolyParser in(file.string(), bytes);
+    Plc plc;
+    plc.source = file.string();
+    read_points_part(in, plc, file);
+    read_facets_part(in, plc);
+    if (in.more()) {
+        const auto header = in.next_or_pending("the hole header");
+        const std::uint64_t holes = in.count(header[0], "number of holes");
+        for (std::uint64_t h = 0; h < holes; ++h) {
+            plc.volume_holes.push_back(hole_point(in, in.next("a volume hole")));
+        }
+    }
+    // A region part, if any, carries attributes the CDT does not use.
+    return plc;
+}
+
+}  // namespace cavity::core
