@@ -29,6 +29,13 @@ done
 # The installed program runs from the prefix.
 test "$(echo "orient3d 0 0 0 1 0 0 0 1 0 0 0 -1" | "$prefix/bin/cavity" sign)" = 1
 
+# The Python module, when it was built, imports from the prefix.
+python_dir="$prefix/lib/python3/dist-packages"
+if compgen -G "$python_dir/cavity.*.so" >/dev/null; then
+  PYTHONPATH="$python_dir" /usr/bin/python3 -c \
+    "import cavity; assert cavity.Delaunay([[0,0,0],[1,0,0],[0,1,0],[0,0,1]]).nsimplex == 1"
+fi
+
 generator=()
 if command -v ninja >/dev/null; then generator=(-G Ninja); fi
 # Only the installed prefix is searched: the build tree must not leak into the consumer.
