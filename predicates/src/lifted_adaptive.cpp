@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "cavity/predicates/detail/expansion.h"
+#include "double_double.h"
 #include "small_expansion.h"
 #include "small_integers.h"
 
@@ -160,9 +161,75 @@ double permanent(const LiftedRows& r) {
            (lift(kB) * perm3(kA, kC, kD) + lift(kA) * perm3(kB, kC, kD));
 }
 
+// The double-double stage's bound (u = 2^-53). Every difference is taken exactly as head + tail
+// (its two_diff), so the only errors are the roundings of the double-double operations, bounded in
+// double_double.h against the magnitudes of their operands: at most beta u^2 |x| |y| for a
+// product (beta = 8 + 23u) and alpha u^2 (|x| + |y|) for a sum (alpha = 3 + 6u). By induction over
+// the evaluation, a computed value X~ of an exact subexpression X with permanent M (the same
+// formula over the magnitudes of the exact differences: M of a sum is M_x + M_y, of a product
+// M_x M_y) satisfies |X~ - X| <= eps_X M, with
+//   1 + eps = (1 + max(eps_x, eps_y)) (1 + alpha u^2) for a sum,
+//   1 + eps = (1 + eps_x) (1 + eps_y) (1 + beta u^2) for a product
+// (for the sum: |X~ - X| <= alpha u^2 (|x~| + |y~|) + eps_x M_x + eps_y M_y with
+// |x~| <= (1 + eps_x) M_x; for the product: beta u^2 |x~| |y~| + |x~ - x| |y~| + |x| |y~ - y|).
+// Counting operations along the evaluation order of lifted_double_double (products, sums):
+//   2x2 minor x_i y_j - x_j y_i: (1, 1); the 3x3 minor (z_i m_jk - z_j m_ik) + z_k m_ij: (2, 3);
+//   the lift ((x^2 + y^2) + z^2) - dw: (1, 3); lift times minor: (4, 6); the final
+//   (T_d - T_c) + (T_b - T_a): (4, 8).
+// So eps <= (1 + beta u^2)^4 (1 + alpha u^2)^8 - 1 <= 56u^2 + 140u^3 + 3200u^4 <= 56u^2 (1 + 3u).
+// The permanent of the exact differences is at most (1 + u)^5 times P of the heads (degree 5; a
+// weight, degree 2, appears in monomials of degree 4), and P <= P~ / (1 - u)^12 for P~ as
+// computed by permanent(), so the error is at most 56u^2 (1 + 3u) (1 + u)^5 / (1 - u)^12 P~
+// <= 56u^2 (1 + 21u) P~. The result hi + lo has the sign of hi and |hi + lo| >= (1 - u)|hi|, so
+// the sign of hi is certified when (1 - u)|hi| exceeds that. The test fl(|hi| 2^80) >
+// fl(58 P~) 2^-26 (both scalings exact, as for stage C's test) gives |hi| > 58 (1 - u) u^2 P~ and
+//   58 (1 - u)^2 u^2 >= 56u^2 (1 + 21u).
+// No operation underflows or overflows in kLiftedAdaptiveWindow: every value computed, the split
+// halves of two_product included, is a multiple of 2^-960 (degree at most 5 in multiples of
+// 2^-192; weights, multiples of 2^-332, count as degree 2), hence normal when nonzero, and the
+// magnitudes stay below (1 + eps) times the permanent, below 2^917.
+constexpr double kDoubleDoubleBound = 58.0;
+
 }  // namespace
 
+std::optional<Sign> lifted_double_double(const LiftedRows& r) {
+    DoubleDouble x[4], y[4], z[4], w[4];
+    for (int i = 0; i < 4; ++i) {
+        x[i] = {r.x[i], r.xt[i]};
+        y[i] = {r.y[i], r.yt[i]};
+        z[i] = {r.z[i], r.zt[i]};
+        w[i] = {r.w[i], r.wt[i]};
+    }
+    DoubleDouble m2[4][4];
+    for (int i = 0; i < 4; ++i) {
+        for (int j = i + 1; j < 4; ++j) {
+            m2[i][j] = difference(product(x[i], y[j]), product(x[j], y[i]));
+        }
+    }
+    auto minor3 = [&](int i, int j, int k) {
+        return sum(difference(product(z[i], m2[j][k]), product(z[j], m2[i][k])),
+                   product(z[k], m2[i][j]));
+    };
+    auto term = [&](int l, const DoubleDouble& minor) {
+        const DoubleDouble lift =
+            difference(sum(sum(square(x[l]), square(y[l])), square(z[l])), w[l]);
+        return product(lift, minor);
+    };
+    const DoubleDouble det =
+        sum(difference(term(kD, minor3(kA, kB, kC)), term(kC, minor3(kA, kB, kD))),
+            difference(term(kB, minor3(kA, kC, kD)), term(kA, minor3(kB, kC, kD))));
+    if (std::abs(det.hi) * kLowerScale > (kDoubleDoubleBound * permanent(r)) * kBoundScale) {
+        return det.hi > 0.0 ? Sign::kPos : Sign::kNeg;
+    }
+    return std::nullopt;
+}
+
 std::optional<Verdict> lifted_adaptive(const LiftedRows& rows) {
+    // The double-double stage: almost every in-range query the filter leaves, at a fraction of
+    // the cost of stage B's exact expansion.
+    if (const std::optional<Sign> s = lifted_double_double(rows)) {
+        return Verdict{*s, Stage::kAdaptive};
+    }
     // Stage B.
     SmallExpansion det;
     if (!lifted_determinant(rows, false, det)) {

@@ -6,10 +6,12 @@
 #include "staged_pipeline.h"
 
 // The expansion stages shared by insphere and orient4d: both are det[p - e, |p - e|^2 - dw_p] over
-// the rows p = a..d, with dw_p = w_p - w_e (zero for insphere). Shewchuk's insphereadapt scheme
-// with bounds derived for this evaluation order: B, the exact determinant of the rounded
-// differences; C, B plus the first-order terms of the difference tails in floating point under a
-// certified bound; D, the exact determinant of the two-component differences.
+// the rows p = a..d, with dw_p = w_p - w_e (zero for insphere). First the determinant of the
+// exact differences in double-double arithmetic under a certified bound (it settles almost every
+// in-range query the filter leaves, rounded spheres and decimal grids included); then Shewchuk's
+// insphereadapt scheme with bounds derived for this evaluation order: B, the exact determinant of
+// the rounded differences; C, B plus the first-order terms of the difference tails in floating
+// point under a certified bound; D, the exact determinant of the two-component differences.
 namespace cavity::predicates::detail {
 
 // Inputs with exponents in [-140, 180] (weights at half their exponent): differences and their
@@ -33,7 +35,13 @@ struct LiftedRows {
     bool differences_exact;
 };
 
-/// The verdict of stages B and C (kAdaptive) or D (kExact); none when D's expansions would outgrow
+/// The double-double stage that runs before stage B: the sign of the determinant evaluated in
+/// double-double arithmetic over the exact differences (rounded + tail), when certified by its
+/// error bound; none otherwise. Requires inputs in kLiftedAdaptiveWindow. Exposed for the tests
+/// that probe the bound.
+std::optional<Sign> lifted_double_double(const LiftedRows& rows);
+
+/// The verdict of the double-double stage or stages B and C (kAdaptive) or D (kExact); none when D's expansions would outgrow
 /// their buffers. Requires inputs in kLiftedAdaptiveWindow.
 std::optional<Verdict> lifted_adaptive(const LiftedRows& rows);
 

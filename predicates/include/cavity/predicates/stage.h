@@ -9,8 +9,10 @@ namespace cavity::predicates {
 
 /// The stage of the evaluation pipeline that decided a predicate's sign.
 ///  - kFilter:   the floating-point determinant with a certified error bound (inputs in range);
-///  - kAdaptive: Shewchuk's stages B and C: the exact expansion of the determinant of the rounded
-///               input differences, then (when a difference was inexact) that plus the first-order
+///  - kAdaptive: the determinant of the exact differences (rounded + tail) in double-double
+///               arithmetic under a certified bound; when that is too close to call, Shewchuk's
+///               stages B and C: the exact expansion of the determinant of the rounded input
+///               differences, then (when a difference was inexact) that plus the first-order
 ///               terms of the difference tails in doubles, under a certified bound;
 ///  - kExact:    the exact determinant: expansions of the two-component differences, or GMP
 ///               integers for inputs whose exponents spread too wide for expansions.

@@ -1,0 +1,254 @@
+// The double-double stage at its bound: queries whose determinant, relative to u^2 times the
+// permanent, sweeps across the acceptance threshold of the stage (58 u^2 P~ for the lifted
+// predicates), so that both its accepted and its declined answers are exercised where its own
+// rounding errors matter. An exactly degenerate integer configuration has its last point moved
+// off the origin by tiny amounts (2^-60 .. 2^-135), so the rounded differences alone are still
+// degenerate and the sign rests on the difference tails.
+//
+// For every query: an accepted sign must equal the oracle's; the stage must accept when the
+// exact determinant (cpp_int, independent of the stage) exceeds the threshold plus the stage's
+// own error bound; and the staged predicate must agree with the oracle.
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <string>
+
+#include <boost/multiprecision/cpp_int.hpp>
+#include <gtest/gtest.h>
+
+#include "cavity/predicates/detail/expansion.h"
+#include "cavity/predicates/insphere.h"
+#include "cavity/predicates/oracle.h"
+#include "cavity/predicates/orient4d.h"
+#include "lifted_adaptive.h"
+
+namespace cavity::predicates {
+namespace {
+
+using Integer = boost::multiprecision::cpp_int;
+
+constexpr int kQueries = 20000;
+constexpr double kUnitRoundoffSquared = 0x1p-106;
+// The lifted stage accepts above 58 u^2 P~ and errs by at most 57 u^2 P~: above this ratio it must
+// accept.
+constexpr double kMustAccept = 120.0;
+
+/// The exact det[p - e, |p - e|^2 - (w_p - w_e)] (p = a..d) and the permanent P~ of the rounded
+/// differences, as the stage defines it, for comparing |det| with the stage's threshold.
+struct Reference {
+    double det_over_bound_unit;  // |det| / (u^2 P~), approximately
+    Sign sign;
+};
+
+Integer scaled_integer(double v, int scale) {
+    return Integer(std::ldexp(v, scale));
+}
+
+Reference lifted_reference(const std::array<WeightedPoint3, 5>& p) {
+    // All inputs are multiples of 2^-scale: scaled by 2^scale (weights by 2^(2 scale)) they are
+    // integers, and the determinant scales by 2^(5 scale).
+    int scale = 0;
+    for (const WeightedPoint3& q : p) {
+        for (const double v : {q.x, q.y, q.z}) {
+            if (v != 0.0) {
+                scale = std::max(scale, 52 - std::ilogb(v));
+            }
+        }
+        if (q.w != 0.0) {
+            scale = std::max(scale, (52 - std::ilogb(q.w) + 1) / 2);
+        }
+    }
+    Integer m[4][4];
+    double perm_rows[4][4];
+    for (int i = 0; i < 4; ++i) {
+        const Integer x = scaled_integer(p[i].x, scale) - scaled_integer(p[4].x, scale);
+        const Integer y = scaled_integer(p[i].y, scale) - scaled_integer(p[4].y, scale);
+        const Integer z = scaled_integer(p[i].z, scale) - scaled_integer(p[4].z, scale);
+        const Integer w = scaled_integer(p[i].w, 2 * scale) - scaled_integer(p[4].w, 2 * scale);
+        m[i][0] = x;
+        m[i][1] = y;
+        m[i][2] = z;
+        m[i][3] = x * x + y * y + z * z - w;
+        perm_rows[i][0] = std::abs(p[i].x - p[4].x);
+        perm_rows[i][1] = std::abs(p[i].y - p[4].y);
+        perm_rows[i][2] = std::abs(p[i].z - p[4].z);
+        perm_rows[i][3] = perm_rows[i][0] * perm_rows[i][0] + perm_rows[i][1] * perm_rows[i][1] +
+                          perm_rows[i][2] * perm_rows[i][2] + std::abs(p[i].w - p[4].w);
+    }
+    // Laplace expansion along the last column; the permanent the same with magnitudes.
+    Integer det = 0;
+    long double permanent = 0.0L;
+    for (int r = 0; r < 4; ++r) {
+        int rows[3];
+        for (int i = 0, n = 0; i < 4; ++i) {
+            if (i != r) {
+                rows[n++] = i;
+            }
+        }
+        const auto& a = m[rows[0]];
+        const auto& b = m[rows[1]];
+        const auto& c = m[rows[2]];
+        const Integer minor = a[0] * (b[1] * c[2] - b[2] * c[1]) -
+                              a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                              a[2] * (b[0] * c[1] - b[1] * c[0]);
+        det += ((r % 2 == 0) ? -1 : 1) * m[r][3] * minor;
+        const double* pa = perm_rows[rows[0]];
+        const double* pb = perm_rows[rows[1]];
+        const double* pc = perm_rows[rows[2]];
+        const long double perm_minor =
+            static_cast<long double>(pa[0]) * (pb[1] * pc[2] + pb[2] * pc[1]) +
+            static_cast<long double>(pa[1]) * (pb[0] * pc[2] + pb[2] * pc[0]) +
+            static_cast<long double>(pa[2]) * (pb[0] * pc[1] + pb[1] * pc[0]);
+        permanent += perm_rows[r][3] * perm_minor;
+    }
+    const Sign sign = det > 0 ? Sign::kPos : (det < 0 ? Sign::kNeg : Sign::kZero);
+    const double magnitude =
+        std::ldexp(static_cast<double>(boost::multiprecision::abs(det)), -5 * scale);
+    return {magnitude / (kUnitRoundoffSquared * static_cast<double>(permanent)), sign};
+}
+
+detail::LiftedRows lifted_rows(const std::array<WeightedPoint3, 5>& p) {
+    detail::LiftedRows rows{};
+    for (int i = 0; i < 4; ++i) {
+        detail::two_diff(p[i].x, p[4].x, rows.x[i], rows.xt[i]);
+        detail::two_diff(p[i].y, p[4].y, rows.y[i], rows.yt[i]);
+        detail::two_diff(p[i].z, p[4].z, rows.z[i], rows.zt[i]);
+        detail::two_diff(p[i].w, p[4].w, rows.w[i], rows.wt[i]);
+    }
+    return rows;
+}
+
+class Source {
+public:
+    explicit Source(std::uint64_t seed) : rng_(seed) {}
+
+    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+
+    /// +-m 2^-k with a random 53-bit m in [1, 2).
+    double tiny(int k) {
+        const double m = 1.0 + std::uniform_real_distribution<double>(0.0, 1.0)(rng_);
+        return std::ldexp(integer(0, 1) == 0 ? m : -m, -k);
+    }
+
+private:
+    std::mt19937_64 rng_;
+};
+
+/// Counts of the sweep: where the queries fell relative to the threshold and what the stage did.
+struct Sweep {
+    int accepted = 0;
+    int declined_below = 0;  // declined with |det| under the threshold: the bound at work
+    int must_accept = 0;
+    int mismatches = 0;
+
+    void check(const std::array<WeightedPoint3, 5>& p,
+               const Reference& ref,
+               std::optional<Sign> stage,
+               Sign staged,
+               Sign oracle_sign) {
+        std::string text;
+        char buffer[128];
+        for (const WeightedPoint3& q : p) {
+            std::snprintf(buffer, sizeof buffer, "%a %a %a %a  ", q.x, q.y, q.z, q.w);
+            text += buffer;
+        }
+        EXPECT_EQ(ref.sign, oracle_sign) << "reference determinant: " << text;
+        if (stage) {
+            ++accepted;
+            if (*stage != oracle_sign && ++mismatches <= 5) {
+                ADD_FAILURE() << "stage sign " << to_int(*stage) << ", oracle "
+                              << to_int(oracle_sign) << ", |det| / u^2 P = "
+                              << ref.det_over_bound_unit << ": " << text;
+            }
+        } else if (ref.det_over_bound_unit < 58.0) {
+            ++declined_below;
+        }
+        if (ref.det_over_bound_unit > kMustAccept) {
+            ++must_accept;
+            EXPECT_TRUE(stage.has_value())
+                << "declined at |det| / u^2 P = " << ref.det_over_bound_unit << ": " << text;
+        }
+        if (staged != oracle_sign && ++mismatches <= 5) {
+            ADD_FAILURE() << "staged sign " << to_int(staged) << ", oracle " << to_int(oracle_sign)
+                          << ": " << text;
+        }
+    }
+
+    void expect_threshold_probed() const {
+        EXPECT_EQ(mismatches, 0);
+        EXPECT_GT(accepted, kQueries / 10);
+        EXPECT_GT(declined_below, kQueries / 10);
+        EXPECT_GT(must_accept, kQueries / 10);
+    }
+};
+
+TEST(DoubleDoubleBound, Insphere) {
+    // Integer points of the sphere of radius 25, translated so that the last one is the origin,
+    // which then moves by tiny amounts in all three coordinates.
+    constexpr int kSphere[][3] = {
+        {9, 12, 20}, {12, 9, 20}, {20, 9, 12}, {0, 0, 25}, {15, 20, 0}, {20, 0, 15}, {0, 7, 24}};
+    Source s(7001);
+    Sweep sweep;
+    for (int q = 0; q < kQueries; ++q) {
+        int offsets[5][3];
+        for (auto& o : offsets) {
+            const auto& k = kSphere[s.integer(0, 6)];
+            for (int c = 0; c < 3; ++c) {
+                o[c] = (s.integer(0, 1) * 2 - 1) * k[c];
+            }
+        }
+        std::array<WeightedPoint3, 5> p;
+        for (int i = 0; i < 4; ++i) {
+            p[i] = {double(offsets[i][0] - offsets[4][0]),
+                    double(offsets[i][1] - offsets[4][1]),
+                    double(offsets[i][2] - offsets[4][2]),
+                    0.0};
+        }
+        const int k = s.integer(60, 135);
+        p[4] = {s.tiny(k), s.tiny(k + s.integer(0, 3)), s.tiny(k + s.integer(0, 3)), 0.0};
+        const auto point = [](const WeightedPoint3& r) { return Point3{r.x, r.y, r.z}; };
+        sweep.check(p,
+                    lifted_reference(p),
+                    detail::lifted_double_double(lifted_rows(p)),
+                    insphere(point(p[0]), point(p[1]), point(p[2]), point(p[3]), point(p[4])),
+                    oracle::insphere(
+                        point(p[0]), point(p[1]), point(p[2]), point(p[3]), point(p[4])));
+    }
+    sweep.expect_threshold_probed();
+}
+
+TEST(DoubleDoubleBound, Orient4d) {
+    // Integer points lifted onto the hyperplane h = a.p through the origin (weights
+    // |p|^2 - a.p), the last one the origin with weight 0, which then moves by tiny amounts in
+    // its coordinates and its weight.
+    Source s(7002);
+    Sweep sweep;
+    for (int q = 0; q < kQueries; ++q) {
+        const int a[3] = {s.integer(-9, 9), s.integer(-9, 9), s.integer(-9, 9)};
+        std::array<WeightedPoint3, 5> p;
+        for (int i = 0; i < 4; ++i) {
+            const int x = s.integer(-20, 20), y = s.integer(-20, 20), z = s.integer(-20, 20);
+            p[i] = {double(x),
+                    double(y),
+                    double(z),
+                    double(x * x + y * y + z * z - (a[0] * x + a[1] * y + a[2] * z))};
+        }
+        const int k = s.integer(60, 135);
+        p[4] = {s.tiny(k),
+                s.tiny(k + s.integer(0, 3)),
+                s.tiny(k + s.integer(0, 3)),
+                s.tiny(k - s.integer(0, 6))};
+        sweep.check(p,
+                    lifted_reference(p),
+                    detail::lifted_double_double(lifted_rows(p)),
+                    orient4d(p[0], p[1], p[2], p[3], p[4]),
+                    oracle::orient4d(p[0], p[1], p[2], p[3], p[4]));
+    }
+    sweep.expect_threshold_probed();
+}
+
+}  // namespace
+}  // namespace cavity::predicates
