@@ -59,14 +59,14 @@ Rational loop_area2(const Plc& plc, const std::vector<std::uint32_t>& loop, int 
     return abs(sum);
 }
 
-bool holds_hole(const Plc& plc, const PlcFacet& facet, const std::vector<std::uint32_t>& loop,
-                int drop) {
-    for (const Point3& h : facet.holes) {
-        if (inside_loop(plc, loop, drop, exact_point(h))) {
-            return true;
-        }
+/// How many other loops of the facet contain loop i (tested at its first corner).
+int depth(const Plc& plc, const PlcFacet& facet, std::size_t i, int drop) {
+    const ExactPoint x = exact_point(plc.points.points[facet.loops[i].front()]);
+    int d = 0;
+    for (std::size_t j = 0; j < facet.loops.size(); ++j) {
+        d += (j != i && inside_loop(plc, facet.loops[j], drop, x)) ? 1 : 0;
     }
-    return false;
+    return d;
 }
 
 }  // namespace
@@ -125,24 +125,18 @@ ExactPoint ExactPlane::crossing(const Point3& p, const Point3& q) const {
 
 bool in_facet_region(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane,
                      const ExactPoint& x) {
-    bool in_some = false;
+    bool inside = false;
     for (const auto& loop : facet.loops) {
-        if (!inside_loop(plc, loop, plane.dropped_axis(), x)) {
-            continue;
-        }
-        if (holds_hole(plc, facet, loop, plane.dropped_axis())) {
-            return false;
-        }
-        in_some = true;
+        inside = inside != inside_loop(plc, loop, plane.dropped_axis(), x);
     }
-    return in_some;
+    return inside;
 }
 
 Rational facet_region_area2(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane) {
     Rational area = 0;
-    for (const auto& loop : facet.loops) {
-        const Rational a = loop_area2(plc, loop, plane.dropped_axis());
-        area += holds_hole(plc, facet, loop, plane.dropped_axis()) ? Rational(-a) : a;
+    for (std::size_t i = 0; i < facet.loops.size(); ++i) {
+        const Rational a = loop_area2(plc, facet.loops[i], plane.dropped_axis());
+        area += depth(plc, facet, i, plane.dropped_axis()) % 2 == 0 ? a : Rational(-a);
     }
     return area;
 }

@@ -46,14 +46,14 @@ private:
     int drop_ = 2;
 };
 
-/// True when x (a point of the facet's plane, not on any loop side) lies in the facet's region: in
-/// some loop and in no loop that holds a hole point. Exact crossing-number tests in the projection
-/// that drops `plane.dropped_axis()`.
+/// True when x (a point of the facet's plane, not on any loop side) lies in the facet's region: inside
+/// an odd number of its loops (the even-odd rule, so a loop nested in another cuts a hole). Exact
+/// crossing-number tests in the projection that drops `plane.dropped_axis()`.
 bool in_facet_region(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane,
                      const ExactPoint& x);
 
-/// Twice the area of the facet's region, measured in the projection (exact): the loops' absolute
-/// areas with the hole rule applied loop by loop (a loop holding a hole point counts negative).
+/// Twice the area of the facet's region, measured in the projection (exact): each loop's absolute
+/// area, negated when an odd number of other loops contain it (loops must not cross).
 Rational facet_region_area2(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane);
 
 /// Twice the absolute area of triangle abc in the same projection.

@@ -13,8 +13,10 @@
 /// (the perturbation keys); `points.index_base` keeps the file's numbering for output.
 namespace cavity::core {
 
-/// One TetGen facet: coplanar loops (polygons of 3 or more corners). Its region is the union of the
-/// loops' interiors minus the interior of every loop that contains one of the facet's hole points.
+/// One TetGen facet: coplanar loops (polygons of 3 or more corners) that do not cross. Its region
+/// is given by the even-odd rule: the points inside an odd number of loops, so a loop nested in
+/// another is a hole. The facet's hole points are kept but not needed by that rule (TetGen uses
+/// them to carve holes; a loop nested without a hole point is therefore read differently).
 /// Two-corner polygons of the facet are segments and go to Plc::segments.
 struct PlcFacet {
     std::vector<std::vector<std::uint32_t>> loops;
