@@ -32,6 +32,31 @@ namespace {
 constexpr double kTailBound = 26.0;
 constexpr double kTailBoundScale = 0x1p106;
 
+// The double-double stage's bound (u = 2^-53), derived as for the lifted predicates (see
+// lifted_adaptive.cpp): with the double-double roundings of double_double.h, beta u^2 |x| |y| for
+// a product (beta = 8 + 23u) and alpha u^2 (|x| + |y|) for a sum (alpha = 3 + 6u), a computed
+// subexpression errs by at most eps times its permanent over the exact differences, where
+// 1 + eps multiplies by (1 + beta u^2) per product and by (1 + alpha u^2) per sum along the
+// evaluation. Counting (products, sums) in orient3d_double_double: the 2x2 minor (1, 1), its
+// product with the z difference (2, 1), the sum of the three terms (2, 3). So
+//   eps <= (1 + beta u^2)^2 (1 + alpha u^2)^3 - 1 <= 25u^2 + 64u^3 + 700u^4 <= 25u^2 (1 + 3u).
+// The permanent of the exact differences is at most (1 + u)^3 P of the heads and P <= P~ /
+// (1 - u)^5 for P~ as computed in orient3d_adaptive, so the error is at most
+// 25u^2 (1 + 3u) (1 + u)^3 / (1 - u)^5 P~ <= 25u^2 (1 + 12u) P~. The result hi + lo has the sign
+// of hi and |hi + lo| >= (1 - u)|hi|; the test fl(|hi| 2^106) > fl(26 P~) (exact scaling, as in
+// stage C) gives |hi| > 26 (1 - u) u^2 P~, and 26 (1 - u)^2 u^2 >= 25u^2 (1 + 12u).
+// No operation underflows or overflows in kOrient3dAdaptiveWindow: every value computed, split
+// halves included, is a multiple of 2^-996 (degree at most 3 in multiples of 2^-332), normal
+// when nonzero, and the magnitudes stay below (1 + eps) times the permanent, below 2^909.
+constexpr double kDoubleDoubleBound = 26.0;
+
+/// P~: the permanent of the rounded differences (the order counted in the bounds above).
+double permanent(const double (&x)[3], const double (&y)[3], const double (&z)[3]) {
+    return (std::abs(x[1] * y[2]) + std::abs(y[1] * x[2])) * std::abs(z[0]) +
+           (std::abs(x[2] * y[0]) + std::abs(y[2] * x[0])) * std::abs(z[1]) +
+           (std::abs(x[0] * y[1]) + std::abs(y[0] * x[1])) * std::abs(z[2]);
+}
+
 /// The exact determinant with rows of exact differences (stage D): each difference as its one or
 /// two components, the 2x2 minors of the x, y columns, then the expansion along z. False when a
 /// buffer would overflow.
@@ -56,6 +81,27 @@ bool exact_determinant(const SmallExpansion (&x)[3],
 
 }  // namespace
 
+std::optional<Sign> orient3d_double_double(const DoubleDouble (&x)[3],
+                                           const DoubleDouble (&y)[3],
+                                           const DoubleDouble (&z)[3]) {
+    // det = z0 (x1 y2 - y1 x2) + z1 (x2 y0 - y2 x0) + z2 (x0 y1 - y0 x1)
+    DoubleDouble term[3];
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        const int k = (i + 2) % 3;
+        term[i] = product(z[i], difference(product(x[j], y[k]), product(y[j], x[k])));
+    }
+    const DoubleDouble det = sum(sum(term[0], term[1]), term[2]);
+    const double heads_x[3] = {x[0].hi, x[1].hi, x[2].hi};
+    const double heads_y[3] = {y[0].hi, y[1].hi, y[2].hi};
+    const double heads_z[3] = {z[0].hi, z[1].hi, z[2].hi};
+    if (std::abs(det.hi) * kTailBoundScale >
+        kDoubleDoubleBound * permanent(heads_x, heads_y, heads_z)) {
+        return det.hi > 0.0 ? Sign::kPos : Sign::kNeg;
+    }
+    return std::nullopt;
+}
+
 std::optional<Verdict> orient3d_adaptive(const std::array<Point3, 4>& p) {
     const Point3& a = p[0];
     const Point3& b = p[1];
@@ -72,6 +118,14 @@ std::optional<Verdict> orient3d_adaptive(const std::array<Point3, 4>& p) {
     two_diff(c.x, d.x, cdx, cdxt);
     two_diff(c.y, d.y, cdy, cdyt);
     two_diff(c.z, d.z, cdz, cdzt);
+
+    // The double-double stage: almost every in-range query the filter leaves.
+    const DoubleDouble exact_x[3] = {{adx, adxt}, {bdx, bdxt}, {cdx, cdxt}};
+    const DoubleDouble exact_y[3] = {{ady, adyt}, {bdy, bdyt}, {cdy, cdyt}};
+    const DoubleDouble exact_z[3] = {{adz, adzt}, {bdz, bdzt}, {cdz, cdzt}};
+    if (const std::optional<Sign> s = orient3d_double_double(exact_x, exact_y, exact_z)) {
+        return Verdict{*s, Stage::kAdaptive};
+    }
 
     // Stage B: the exact determinant of the rounded differences (Shewchuk's layout).
     double bc[4];
@@ -109,11 +163,9 @@ std::optional<Verdict> orient3d_adaptive(const std::array<Point3, 4>& p) {
                                 cdzt * (adx * bdy - ady * bdx));
     double corrected[26];
     const int corrected_len = expansion_sum(det_len, det, 1, &first_order, corrected);
-    const double permanent = (std::abs(bdx * cdy) + std::abs(bdy * cdx)) * std::abs(adz) +
-                             (std::abs(cdx * ady) + std::abs(cdy * adx)) * std::abs(bdz) +
-                             (std::abs(adx * bdy) + std::abs(ady * bdx)) * std::abs(cdz);
     const double lower = expansion_magnitude_lower_bound(corrected_len, corrected);
-    if (lower * kTailBoundScale > kTailBound * permanent) {
+    if (lower * kTailBoundScale >
+        kTailBound * permanent({adx, bdx, cdx}, {ady, bdy, cdy}, {adz, bdz, cdz})) {
         return Verdict{static_cast<Sign>(expansion_sign(corrected_len, corrected)),
                        Stage::kAdaptive};
     }

@@ -1,6 +1,6 @@
 // The double-double stage at its bound: queries whose determinant, relative to u^2 times the
 // permanent, sweeps across the acceptance threshold of the stage (58 u^2 P~ for the lifted
-// predicates), so that both its accepted and its declined answers are exercised where its own
+// predicates, 26 u^2 P~ for orient3d), so that both its accepted and its declined answers are exercised where its own
 // rounding errors matter. An exactly degenerate integer configuration has its last point moved
 // off the origin by tiny amounts (2^-60 .. 2^-135), so the rounded differences alone are still
 // degenerate and the sign rests on the difference tails.
@@ -15,6 +15,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <type_traits>
 
 #include <boost/multiprecision/cpp_int.hpp>
 #include <gtest/gtest.h>
@@ -22,8 +23,10 @@
 #include "cavity/predicates/detail/expansion.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/oracle.h"
+#include "cavity/predicates/orient3d.h"
 #include "cavity/predicates/orient4d.h"
 #include "lifted_adaptive.h"
+#include "orient3d_adaptive.h"
 
 namespace cavity::predicates {
 namespace {
@@ -32,9 +35,18 @@ using Integer = boost::multiprecision::cpp_int;
 
 constexpr int kQueries = 20000;
 constexpr double kUnitRoundoffSquared = 0x1p-106;
-// The lifted stage accepts above 58 u^2 P~ and errs by at most 57 u^2 P~: above this ratio it must
-// accept.
-constexpr double kMustAccept = 120.0;
+
+/// Where a stage accepts (|det| / u^2 P~ of its computed determinant) and where it must accept
+/// (that plus its own error bound, with room for the rounding of the reference ratio).
+struct Threshold {
+    double accept;
+    double must_accept;
+};
+
+// The lifted stage accepts above 58 u^2 P~ and errs by at most 57 u^2 P~; orient3d's accepts
+// above 26 u^2 P~ and errs by at most 26 u^2 P~.
+constexpr Threshold kLifted = {58.0, 120.0};
+constexpr Threshold kOrient3d = {26.0, 60.0};
 
 /// The exact det[p - e, |p - e|^2 - (w_p - w_e)] (p = a..d) and the permanent P~ of the rounded
 /// differences, as the stage defines it, for comparing |det| with the stage's threshold.
@@ -110,6 +122,41 @@ Reference lifted_reference(const std::array<WeightedPoint3, 5>& p) {
     return {magnitude / (kUnitRoundoffSquared * static_cast<double>(permanent)), sign};
 }
 
+Reference orient3d_reference(const std::array<Point3, 4>& p) {
+    int scale = 0;
+    for (const Point3& q : p) {
+        for (const double v : {q.x, q.y, q.z}) {
+            if (v != 0.0) {
+                scale = std::max(scale, 52 - std::ilogb(v));
+            }
+        }
+    }
+    Integer m[3][3];
+    double perm_rows[3][3];
+    for (int i = 0; i < 3; ++i) {
+        m[i][0] = scaled_integer(p[i].x, scale) - scaled_integer(p[3].x, scale);
+        m[i][1] = scaled_integer(p[i].y, scale) - scaled_integer(p[3].y, scale);
+        m[i][2] = scaled_integer(p[i].z, scale) - scaled_integer(p[3].z, scale);
+        perm_rows[i][0] = std::abs(p[i].x - p[3].x);
+        perm_rows[i][1] = std::abs(p[i].y - p[3].y);
+        perm_rows[i][2] = std::abs(p[i].z - p[3].z);
+    }
+    Integer det = 0;
+    long double permanent = 0.0L;
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        const int k = (i + 2) % 3;
+        det += m[i][2] * (m[j][0] * m[k][1] - m[j][1] * m[k][0]);
+        permanent += static_cast<long double>(perm_rows[i][2]) *
+                     (static_cast<long double>(perm_rows[j][0]) * perm_rows[k][1] +
+                      static_cast<long double>(perm_rows[j][1]) * perm_rows[k][0]);
+    }
+    const Sign sign = det > 0 ? Sign::kPos : (det < 0 ? Sign::kNeg : Sign::kZero);
+    const double magnitude =
+        std::ldexp(static_cast<double>(boost::multiprecision::abs(det)), -3 * scale);
+    return {magnitude / (kUnitRoundoffSquared * static_cast<double>(permanent)), sign};
+}
+
 detail::LiftedRows lifted_rows(const std::array<WeightedPoint3, 5>& p) {
     detail::LiftedRows rows{};
     for (int i = 0; i < 4; ++i) {
@@ -127,6 +174,13 @@ public:
 
     int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
 
+    /// A random multiple of 2^-bits in (-1, 1): bits significant bits at most.
+    double fraction(int bits) {
+        const auto n = std::uniform_int_distribution<std::int64_t>(
+            -(std::int64_t{1} << bits) + 1, (std::int64_t{1} << bits) - 1)(rng_);
+        return std::ldexp(static_cast<double>(n), -bits);
+    }
+
     /// +-m 2^-k with a random 53-bit m in [1, 2).
     double tiny(int k) {
         const double m = 1.0 + std::uniform_real_distribution<double>(0.0, 1.0)(rng_);
@@ -139,41 +193,36 @@ private:
 
 /// Counts of the sweep: where the queries fell relative to the threshold and what the stage did.
 struct Sweep {
+    Threshold threshold;
     int accepted = 0;
     int declined_below = 0;  // declined with |det| under the threshold: the bound at work
     int must_accept = 0;
     int mismatches = 0;
 
-    void check(const std::array<WeightedPoint3, 5>& p,
+    void check(const std::string& query,
                const Reference& ref,
                std::optional<Sign> stage,
                Sign staged,
                Sign oracle_sign) {
-        std::string text;
-        char buffer[128];
-        for (const WeightedPoint3& q : p) {
-            std::snprintf(buffer, sizeof buffer, "%a %a %a %a  ", q.x, q.y, q.z, q.w);
-            text += buffer;
-        }
-        EXPECT_EQ(ref.sign, oracle_sign) << "reference determinant: " << text;
+        EXPECT_EQ(ref.sign, oracle_sign) << "reference determinant: " << query;
         if (stage) {
             ++accepted;
             if (*stage != oracle_sign && ++mismatches <= 5) {
                 ADD_FAILURE() << "stage sign " << to_int(*stage) << ", oracle "
                               << to_int(oracle_sign) << ", |det| / u^2 P = "
-                              << ref.det_over_bound_unit << ": " << text;
+                              << ref.det_over_bound_unit << ": " << query;
             }
-        } else if (ref.det_over_bound_unit < 58.0) {
+        } else if (ref.det_over_bound_unit < threshold.accept) {
             ++declined_below;
         }
-        if (ref.det_over_bound_unit > kMustAccept) {
+        if (ref.det_over_bound_unit > threshold.must_accept) {
             ++must_accept;
             EXPECT_TRUE(stage.has_value())
-                << "declined at |det| / u^2 P = " << ref.det_over_bound_unit << ": " << text;
+                << "declined at |det| / u^2 P = " << ref.det_over_bound_unit << ": " << query;
         }
         if (staged != oracle_sign && ++mismatches <= 5) {
             ADD_FAILURE() << "staged sign " << to_int(staged) << ", oracle " << to_int(oracle_sign)
-                          << ": " << text;
+                          << ": " << query;
         }
     }
 
@@ -185,13 +234,31 @@ struct Sweep {
     }
 };
 
+template <typename P, std::size_t N>
+std::string hex(const std::array<P, N>& points) {
+    std::string text;
+    char buffer[64];
+    for (const P& q : points) {
+        for (const double v : {q.x, q.y, q.z}) {
+            std::snprintf(buffer, sizeof buffer, "%a ", v);
+            text += buffer;
+        }
+        if constexpr (std::is_same_v<P, WeightedPoint3>) {
+            std::snprintf(buffer, sizeof buffer, "%a", q.w);
+            text += buffer;
+        }
+        text += "  ";
+    }
+    return text;
+}
+
 TEST(DoubleDoubleBound, Insphere) {
     // Integer points of the sphere of radius 25, translated so that the last one is the origin,
     // which then moves by tiny amounts in all three coordinates.
     constexpr int kSphere[][3] = {
         {9, 12, 20}, {12, 9, 20}, {20, 9, 12}, {0, 0, 25}, {15, 20, 0}, {20, 0, 15}, {0, 7, 24}};
     Source s(7001);
-    Sweep sweep;
+    Sweep sweep{kLifted};
     for (int q = 0; q < kQueries; ++q) {
         int offsets[5][3];
         for (auto& o : offsets) {
@@ -210,7 +277,7 @@ TEST(DoubleDoubleBound, Insphere) {
         const int k = s.integer(60, 135);
         p[4] = {s.tiny(k), s.tiny(k + s.integer(0, 3)), s.tiny(k + s.integer(0, 3)), 0.0};
         const auto point = [](const WeightedPoint3& r) { return Point3{r.x, r.y, r.z}; };
-        sweep.check(p,
+        sweep.check(hex(p),
                     lifted_reference(p),
                     detail::lifted_double_double(lifted_rows(p)),
                     insphere(point(p[0]), point(p[1]), point(p[2]), point(p[3]), point(p[4])),
@@ -221,31 +288,61 @@ TEST(DoubleDoubleBound, Insphere) {
 }
 
 TEST(DoubleDoubleBound, Orient4d) {
-    // Integer points lifted onto the hyperplane h = a.p through the origin (weights
-    // |p|^2 - a.p), the last one the origin with weight 0, which then moves by tiny amounts in
-    // its coordinates and its weight.
+    // Points lifted onto the hyperplane h = a.p through the origin (weights |p|^2 - a.p, exact:
+    // coordinates of 20 significant bits, integer a), the last one the origin with weight 0,
+    // which then moves by tiny amounts in its coordinates and its weight. The products of the
+    // stage beyond the 2x2 minors are rounded.
     Source s(7002);
-    Sweep sweep;
+    Sweep sweep{kLifted};
     for (int q = 0; q < kQueries; ++q) {
-        const int a[3] = {s.integer(-9, 9), s.integer(-9, 9), s.integer(-9, 9)};
+        const double a[3] = {double(s.integer(-9, 9)), double(s.integer(-9, 9)),
+                             double(s.integer(-9, 9))};
         std::array<WeightedPoint3, 5> p;
         for (int i = 0; i < 4; ++i) {
-            const int x = s.integer(-20, 20), y = s.integer(-20, 20), z = s.integer(-20, 20);
-            p[i] = {double(x),
-                    double(y),
-                    double(z),
-                    double(x * x + y * y + z * z - (a[0] * x + a[1] * y + a[2] * z))};
+            const double x = s.fraction(20), y = s.fraction(20), z = s.fraction(20);
+            p[i] = {x, y, z, x * x + y * y + z * z - (a[0] * x + a[1] * y + a[2] * z)};
         }
         const int k = s.integer(60, 135);
         p[4] = {s.tiny(k),
                 s.tiny(k + s.integer(0, 3)),
                 s.tiny(k + s.integer(0, 3)),
                 s.tiny(k - s.integer(0, 6))};
-        sweep.check(p,
+        sweep.check(hex(p),
                     lifted_reference(p),
                     detail::lifted_double_double(lifted_rows(p)),
                     orient4d(p[0], p[1], p[2], p[3], p[4]),
                     oracle::orient4d(p[0], p[1], p[2], p[3], p[4]));
+    }
+    sweep.expect_threshold_probed();
+}
+
+TEST(DoubleDoubleBound, Orient3d) {
+    // Points of a plane z = a x + b y through the origin (a, b in {0, +-1/2, +-1, +-2}), with
+    // coordinates of 40 significant bits, so that z is exact and the products in the stage are
+    // rounded; the last one, the origin, moves by tiny amounts in all three coordinates.
+    Source s(7003);
+    Sweep sweep{kOrient3d};
+    constexpr double kSlopes[] = {0.0, 0.5, -0.5, 1.0, -1.0, 2.0, -2.0};
+    for (int q = 0; q < kQueries; ++q) {
+        const double a = kSlopes[s.integer(0, 6)], b = kSlopes[s.integer(0, 6)];
+        std::array<Point3, 4> p;
+        for (int i = 0; i < 3; ++i) {
+            const double x = s.fraction(40), y = s.fraction(40);
+            p[i] = {x, y, a * x + b * y};
+        }
+        const int k = s.integer(60, 135);
+        p[3] = {s.tiny(k), s.tiny(k + s.integer(0, 3)), s.tiny(k + s.integer(0, 3))};
+        detail::DoubleDouble x[3], y[3], z[3];
+        for (int i = 0; i < 3; ++i) {
+            x[i] = detail::exact_difference(p[i].x, p[3].x);
+            y[i] = detail::exact_difference(p[i].y, p[3].y);
+            z[i] = detail::exact_difference(p[i].z, p[3].z);
+        }
+        sweep.check(hex(p),
+                    orient3d_reference(p),
+                    detail::orient3d_double_double(x, y, z),
+                    orient3d(p[0], p[1], p[2], p[3]),
+                    oracle::orient3d(p[0], p[1], p[2], p[3]));
     }
     sweep.expect_threshold_probed();
 }
