@@ -232,6 +232,89 @@ def summarize_degenerate(inp, md):
     md.append(f"\n(insphere stages counted as exact: {', '.join(stage_cols)})\n")
 
 
+# The goals for cavity's CPU time over CGAL's (order + triangulation against range
+# insertion): half on uniform points, 0.8 on the grid and the sphere.
+PEER_GOALS = {"cube": 0.5, "grid": 0.8, "sphere": 0.8}
+
+
+def plot_peers(inp, out, md):
+    rows = read(os.path.join(inp, "peers.csv"))
+    if rows is None:
+        return
+    peers = [p for p in ("cgal", "tetgen") if any(r[f"{p}_status"] == "ok" for r in rows)]
+    fig, axes = plt.subplots(1, 3, figsize=(16, 4.5))
+    md.append("## peers (cavity against CGAL and TetGen)\n")
+    md.append("Ratios are cavity / peer, median over seeds (min–max in brackets); CPU seconds are "
+              "process CPU time. TetGen's time is its whole process (reading .node, writing .ele); "
+              "`tetgen Delaunay` is the ratio to TetGen's own Delaunay phase.\n")
+    md.append("| dist | n | cavity s | CGAL s | time cavity/CGAL | goal | memory cavity/CGAL | "
+              "TetGen s | time cavity/TetGen | time cavity/TetGen Delaunay | memory cavity/TetGen | "
+              "tets cavity / CGAL / TetGen |")
+    md.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    colors = {}
+
+    def spread(values):
+        if not values:
+            return "—"
+        return f"{np.median(values):.2f} [{min(values):.2f}–{max(values):.2f}]"
+
+    for (dist,), rs in sorted(group(rows, "dist").items()):
+        by_n = defaultdict(list)
+        for r in rs:
+            by_n[int(r["points"])].append(r)
+        ns = sorted(by_n)
+        for ax, peer, key in ((axes[0], "cgal", "time_ratio"), (axes[1], "tetgen", "time_ratio"),
+                              (axes[2], "cgal", "memory_ratio")):
+            if peer not in peers:
+                continue
+            xs, med, lo, hi = [], [], [], []
+            for n in ns:
+                v = [float(r[f"{peer}_{key}"]) for r in by_n[n] if r[f"{peer}_status"] == "ok"]
+                if v:
+                    xs.append(n)
+                    med.append(float(np.median(v)))
+                    lo.append(med[-1] - min(v))
+                    hi.append(max(v) - med[-1])
+            if xs:
+                line = ax.errorbar(xs, med, yerr=[lo, hi], fmt="o-", ms=4, capsize=3, label=dist,
+                                   color=colors.get(dist))
+                colors[dist] = line[0].get_color()
+        for n in ns:
+            b = by_n[n]
+
+            def vals(col, peer=None):
+                return [float(r[col]) for r in b if peer is None or r[f"{peer}_status"] == "ok"]
+
+            tg_delaunay = [float(r["cavity_s"]) / float(r["tetgen_delaunay_s"]) for r in b
+                           if r["tetgen_status"] == "ok" and r["tetgen_delaunay_s"] not in ("-", "0")]
+            tets = " / ".join(str(int(np.median(vals(f"{e}_tets", None if e == "cavity" else e))))
+                              if vals(f"{e}_tets", None if e == "cavity" else e) else "—"
+                              for e in ("cavity", "cgal", "tetgen"))
+            md.append(f"| {dist} | {n} | {np.median(vals('cavity_s')):.3g} | "
+                      f"{np.median(vals('cgal_s', 'cgal')) if vals('cgal_s', 'cgal') else float('nan'):.3g} | "
+                      f"{spread(vals('cgal_time_ratio', 'cgal'))} | {PEER_GOALS.get(dist, '—')} | "
+                      f"{spread(vals('cgal_memory_ratio', 'cgal'))} | "
+                      f"{np.median(vals('tetgen_s', 'tetgen')) if vals('tetgen_s', 'tetgen') else float('nan'):.3g} | "
+                      f"{spread(vals('tetgen_time_ratio', 'tetgen'))} | {spread(tg_delaunay)} | "
+                      f"{spread(vals('tetgen_memory_ratio', 'tetgen'))} | {tets} |")
+    for dist, goal in PEER_GOALS.items():
+        axes[0].axhline(goal, color=colors.get(dist, "k"), ls="--", lw=1, label=f"goal {dist}: {goal}")
+    axes[0].set(title="CPU time, cavity / CGAL")
+    axes[1].set(title="CPU time, cavity / TetGen (whole process)")
+    axes[2].set(title="peak memory, cavity / CGAL (each in its own process)")
+    for ax in axes:
+        ax.set_xscale("log")
+        ax.axhline(1, color="gray", lw=0.8)
+        ax.set(xlabel="n (points)", ylabel="ratio")
+        ax.legend(fontsize=7)
+        ax.grid(True, which="both", alpha=0.3)
+    for ax, peer in ((axes[0], "cgal"), (axes[1], "tetgen"), (axes[2], "cgal")):
+        if peer not in peers:
+            ax.text(0.5, 0.5, f"{peer} unavailable", transform=ax.transAxes, ha="center")
+    save(fig, out, "peers")
+    md.append("")
+
+
 def main():
     inp, out = sys.argv[1], sys.argv[2]
     os.makedirs(out, exist_ok=True)
@@ -247,6 +330,7 @@ def main():
     plot_loglog_suite(inp, out, md, "adversarial", "created", "grid: tetrahedra created per point",
                       "created / n", True, [(0, "slope 0 (linear total)"), (0.5, "slope 1/2 (n^1.5 total)")])
     summarize_degenerate(inp, md)
+    plot_peers(inp, out, md)
     with open(os.path.join(out, "summary.md"), "w") as f:
         f.write("\n".join(md) + "\n")
 

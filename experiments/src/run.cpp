@@ -17,13 +17,18 @@ std::vector<std::string> key_values(const RunSpec& run) {
 
 std::vector<RunSpec> enumerate_runs(const Suite& suite, const TierSettings& tier) {
     std::vector<RunSpec> runs;
-    const bool triangulates = suite.kind == SuiteKind::kRuns || suite.kind == SuiteKind::kDegenerate;
+    const bool triangulates = suite.kind == SuiteKind::kRuns || suite.kind == SuiteKind::kDegenerate ||
+                              suite.kind == SuiteKind::kPeers;
     const std::vector<std::string> none{"-"};
     const auto& orders = suite.kind == SuiteKind::kJTets ? none : suite.orders;
     const auto& locators = triangulates ? suite.locators : none;
     const auto& storages = triangulates ? suite.storages : none;
     for (const std::string& dist : suite.distributions) {
+        const auto cap = suite.caps.find(dist);
         for (std::uint64_t n : tier.sizes) {
+            if (cap != suite.caps.end() && n > cap->second) {
+                continue;
+            }
             for (std::uint64_t seed : tier.seeds) {
                 for (const std::string& order : orders) {
                     for (const std::string& locate : locators) {
@@ -44,6 +49,7 @@ double run_cost(const Suite& suite, const TierSettings& tier, const RunSpec& run
         case SuiteKind::kJTets: return std::pow(n, 4) * 1e-3;
         case SuiteKind::kCreation: return n * n * static_cast<double>(tier.orders);
         case SuiteKind::kDegenerate: return n * 10;
+        case SuiteKind::kPeers: return n * 3;
         case SuiteKind::kRuns: break;
     }
     return n * (suite.validate ? 10 : 1);
@@ -53,6 +59,7 @@ std::vector<std::string> metric_columns(SuiteKind kind) {
     switch (kind) {
         case SuiteKind::kJTets: return measure::jtets_columns();
         case SuiteKind::kCreation: return measure::creation_columns();
+        case SuiteKind::kPeers: return measure::peers_columns();
         case SuiteKind::kRuns:
         case SuiteKind::kDegenerate: break;
     }
@@ -63,6 +70,7 @@ std::vector<std::string> j_columns(SuiteKind kind) {
     switch (kind) {
         case SuiteKind::kJTets: return measure::jtets_j_columns();
         case SuiteKind::kCreation: return measure::creation_j_columns();
+        case SuiteKind::kPeers:
         case SuiteKind::kRuns:
         case SuiteKind::kDegenerate: break;
     }
@@ -73,6 +81,7 @@ RunOutput execute_run(const Suite& suite, const TierSettings& tier, const RunSpe
     switch (suite.kind) {
         case SuiteKind::kJTets: return measure::jtets(run);
         case SuiteKind::kCreation: return measure::creation(suite, tier, run);
+        case SuiteKind::kPeers: return measure::peers(suite, run);
         case SuiteKind::kRuns:
         case SuiteKind::kDegenerate: break;
     }

@@ -94,13 +94,13 @@ private:
 
 SuiteKind parse_kind(const LineReader& reader, const std::string& word) {
     constexpr SuiteKind kKinds[] = {SuiteKind::kRuns, SuiteKind::kJTets, SuiteKind::kCreation,
-                                    SuiteKind::kDegenerate};
+                                    SuiteKind::kDegenerate, SuiteKind::kPeers};
     for (SuiteKind kind : kKinds) {
         if (word == suite_kind_name(kind)) {
             return kind;
         }
     }
-    reader.fail("unknown kind '" + word + "' (runs, jtets, creation or degenerate)");
+    reader.fail("unknown kind '" + word + "' (runs, jtets, creation, degenerate or peers)");
 }
 
 void check_distribution(const std::string& name) {
@@ -126,6 +126,7 @@ std::string_view suite_kind_name(SuiteKind kind) {
         case SuiteKind::kJTets: return "jtets";
         case SuiteKind::kCreation: return "creation";
         case SuiteKind::kDegenerate: return "degenerate";
+        case SuiteKind::kPeers: return "peers";
     }
     return "runs";
 }
@@ -164,10 +165,12 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
             continue;
         }
         const LineReader reader(file, line_number);
+        // `cap` may appear once per distribution: its identity is the key and the name.
         const std::string key = words.front();
         words.erase(words.begin());
-        if (!seen.insert(key).second) {
-            reader.fail("key '" + key + "' given twice");
+        const std::string identity = key == "cap" && !words.empty() ? key + " " + words.front() : key;
+        if (!seen.insert(identity).second) {
+            reader.fail("key '" + identity + "' given twice");
         }
         if (words.empty()) {
             reader.fail("key '" + key + "' has no value");
@@ -218,6 +221,12 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
             }
             suite.validate = w == "yes";
             validate_given = true;
+        } else if (key == "cap") {
+            if (words.size() != 2) {
+                reader.fail("cap takes a distribution and a size");
+            }
+            reader.names({words[0]}, check_distribution);
+            suite.caps[words[0]] = reader.integer(words[1]);
         } else {
             reader.fail("unknown key '" + key + "'");
         }

@@ -21,4 +21,11 @@ RunOutput creation(const Suite& suite, const TierSettings& tier, const RunSpec& 
 std::vector<std::string> creation_columns();
 std::vector<std::string> creation_j_columns();
 
+/// cavity against its peers on the same points, each engine in a child process of its own: CPU
+/// seconds, tetrahedra and peak memory of cavity (order + triangulation), CGAL's
+/// Delaunay_triangulation_3 (when built with CGAL) and TetGen (when `tetgen` is on PATH), and
+/// cavity's ratios to each. A peer that is not there is reported as unavailable, never an error.
+RunOutput peers(const Suite& suite, const RunSpec& run);
+std::vector<std::string> peers_columns();
+
 }  // namespace cavity::experiments::measure

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -11,7 +12,7 @@
 /// Suite files are line based: `key value value ...`, `#` starts a comment, blank lines are
 /// ignored. Keys (each at most once):
 ///   question  TEXT                      what the suite checks (required)
-///   kind      runs|jtets|creation|degenerate   (required)
+///   kind      runs|jtets|creation|degenerate|peers   (required)
 ///   dist      NAME...                   generate_points distributions (required)
 ///   n.quick   N...   n.full N...        sizes per tier (required)
 ///   seeds.quick S... seeds.full S...    point (and order) seeds; `A..B` is a range (required)
@@ -22,10 +23,12 @@
 ///   brio-ratio R                        (default 0.5)
 ///   orders.quick R  orders.full R       creation: insertion orders per point set (default 100)
 ///   validate  yes|no                    check every output exactly (default: yes for degenerate)
+///   cap       DIST N                    leave out the sizes above N for DIST (a generator's
+///                                       limit, e.g. cospherical); may be given once per DIST
 /// Anything else is an Error naming the file and the line.
 namespace cavity::experiments {
 
-enum class SuiteKind { kRuns, kJTets, kCreation, kDegenerate };
+enum class SuiteKind { kRuns, kJTets, kCreation, kDegenerate, kPeers };
 
 std::string_view suite_kind_name(SuiteKind kind);
 
@@ -46,6 +49,8 @@ struct Suite {
     std::vector<std::string> storages{"array"};
     double brio_ratio = 0.5;
     bool validate = false;
+    /// Distribution -> largest size run (the `cap` key); sizes above it are not enumerated.
+    std::map<std::string, std::uint64_t> caps;
     TierSettings quick;
     TierSettings full;
 
