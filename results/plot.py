@@ -235,6 +235,7 @@ def summarize_degenerate(inp, md):
 # The goals for cavity's CPU time over CGAL's (order + triangulation against range
 # insertion): half on uniform points, 0.8 on the grid and the sphere.
 PEER_GOALS = {"cube": 0.5, "grid": 0.8, "sphere": 0.8}
+PEER_COLORS = {"cube": "C0", "grid": "C1", "sphere": "C2", "cospherical": "C3"}
 
 
 def plot_peers(inp, out, md):
@@ -251,8 +252,6 @@ def plot_peers(inp, out, md):
               "TetGen s | time cavity/TetGen | time cavity/TetGen Delaunay | memory cavity/TetGen | "
               "tets cavity / CGAL / TetGen |")
     md.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
-    colors = {}
-
     def spread(values):
         if not values:
             return "—"
@@ -276,9 +275,8 @@ def plot_peers(inp, out, md):
                     lo.append(med[-1] - min(v))
                     hi.append(max(v) - med[-1])
             if xs:
-                line = ax.errorbar(xs, med, yerr=[lo, hi], fmt="o-", ms=4, capsize=3, label=dist,
-                                   color=colors.get(dist))
-                colors[dist] = line[0].get_color()
+                ax.errorbar(xs, med, yerr=[lo, hi], fmt="o-", ms=4, capsize=3, label=dist,
+                            color=PEER_COLORS.get(dist))
         for n in ns:
             b = by_n[n]
 
@@ -297,8 +295,9 @@ def plot_peers(inp, out, md):
                       f"{np.median(vals('tetgen_s', 'tetgen')) if vals('tetgen_s', 'tetgen') else float('nan'):.3g} | "
                       f"{spread(vals('tetgen_time_ratio', 'tetgen'))} | {spread(tg_delaunay)} | "
                       f"{spread(vals('tetgen_memory_ratio', 'tetgen'))} | {tets} |")
-    for dist, goal in PEER_GOALS.items():
-        axes[0].axhline(goal, color=colors.get(dist, "k"), ls="--", lw=1, label=f"goal {dist}: {goal}")
+    for goal in sorted(set(PEER_GOALS.values())):
+        named = ", ".join(d for d, g in PEER_GOALS.items() if g == goal)
+        axes[0].axhline(goal, color="k", ls="--", lw=1, label=f"goal {named}: {goal}")
     axes[0].set(title="CPU time, cavity / CGAL")
     axes[1].set(title="CPU time, cavity / TetGen (whole process)")
     axes[2].set(title="peak memory, cavity / CGAL (each in its own process)")
