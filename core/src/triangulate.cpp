@@ -1,6 +1,7 @@
 #include "cavity/core/triangulate.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "cavity/core/bootstrap.h"
@@ -32,9 +33,46 @@ StorageKind parse_storage_kind(std::string_view name) {
 
 namespace detail {
 
+namespace {
+
+// Bad input is reported before anything is built: a non-finite coordinate or weight (NaN would
+// break every ordering and predicate), weights that do not match the points, or a sequence that is
+// not a permutation of the points.
+void check_input(const PointSet& input, std::span<const std::uint32_t> sequence) {
+    const std::size_t n = input.size();
+    if (input.weighted() && input.weights.size() != n) {
+        throw Error(std::to_string(input.weights.size()) + " weights for " + std::to_string(n) +
+                    " points");
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const Point3& p = input.points[i];
+        const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) &&
+                            (!input.weighted() || std::isfinite(input.weights[i]));
+        if (!finite) {
+            throw Error("point " + std::to_string(i + static_cast<std::size_t>(input.index_base)) +
+                        " has a non-finite coordinate or weight");
+        }
+    }
+    if (sequence.size() != n) {
+        throw Error("the insertion sequence has " + std::to_string(sequence.size()) +
+                    " entries for " + std::to_string(n) + " points");
+    }
+    std::vector<bool> seen(n, false);
+    for (std::uint32_t i : sequence) {
+        if (i >= n || seen[i]) {
+            throw Error("the insertion sequence is not a permutation of the points (entry " +
+                        std::to_string(i) + ")");
+        }
+        seen[i] = true;
+    }
+}
+
+}  // namespace
+
 Prepared prepare(const PointSet& input,
                  std::span<const std::uint32_t> sequence,
                  Triangulation& out) {
+    check_input(input, sequence);
     const auto first = first_occurrences(input.points, input.weights);
     std::vector<std::uint32_t> order;
     order.reserve(sequence.size());

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numeric>
 #include <string>
 
@@ -60,6 +61,27 @@ TEST(Errors, SequenceMustCoverThePoints) {
     set.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     const std::vector<std::uint32_t> sequence{0, 1, 2};
     EXPECT_THROW(core::triangulate(set, sequence, core::TriangulateOptions{}), core::Error);
+}
+
+TEST(Errors, NonFiniteCoordinatesNameThePoint) {
+    for (double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+        std::vector<predicates::Point3> points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+        points[3].y = bad;
+        EXPECT_NE(error_of(points).find("point 3 has a non-finite"), std::string::npos)
+            << error_of(points);
+    }
+}
+
+TEST(Errors, SequenceMustBeAPermutation) {
+    core::PointSet set;
+    set.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const std::vector<std::uint32_t> repeated{0, 1, 2, 2};
+    EXPECT_THROW(core::triangulate(set, repeated, core::TriangulateOptions{}), core::Error);
+    const std::vector<std::uint32_t> outside{0, 1, 2, 7};
+    EXPECT_THROW(core::triangulate(set, outside, core::TriangulateOptions{}), core::Error);
+    set.weights = {0.0, 1.0};
+    const std::vector<std::uint32_t> identity{0, 1, 2, 3};
+    EXPECT_THROW(core::triangulate(set, identity, core::TriangulateOptions{}), core::Error);
 }
 
 }  // namespace

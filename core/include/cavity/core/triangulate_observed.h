@@ -26,8 +26,10 @@ struct Prepared {
     Geometry geometry;
 };
 
-/// Removes repeats (keeping the lowest index), puts the bootstrap four first and lays the points
-/// out in insertion order. Throws Error when there is no 3D triangulation.
+/// Checks the input (finite coordinates and weights, one weight per point, the sequence a
+/// permutation), removes repeats (keeping the lowest index), puts the bootstrap four first and lays
+/// the points out in insertion order. Throws Error naming the problem, or when there is no 3D
+/// triangulation.
 Prepared prepare(const PointSet& input, std::span<const std::uint32_t> sequence, Triangulation& out);
 
 template <class Storage, class Observer, class Locator>
@@ -163,10 +165,6 @@ Triangulation triangulate_observed(const PointSet& points,
                                    std::span<const std::uint32_t> sequence,
                                    const TriangulateOptions& options,
                                    Observer& observer) {
-    if (sequence.size() != points.size()) {
-        throw Error("the insertion sequence has " + std::to_string(sequence.size()) +
-                    " entries for " + std::to_string(points.size()) + " points");
-    }
     Triangulation out;
     const detail::Prepared prep = detail::prepare(points, sequence, out);
     detail::dispatch_storage(prep, options, observer, out);
