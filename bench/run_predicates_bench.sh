@@ -111,10 +111,11 @@ lines += [
     "",
     "The after column's exact fraction is mostly the exact expansion stage D (GMP remains only for",
     "inputs spread too widely for a power-of-two shift into the expansion window).",
-    "Stage C now decides almost every near-degenerate query, but insphere and orient4d still pay",
-    "for stage B, the exact expansion of the lifted determinant of the rounded differences (about",
-    "2-3 us here); orient3d's stage B is short. Rows outside this section are unchanged code paths",
-    "(filters, small-integer path) and move with the load only.",
+    "The adaptive stage now starts with a certified double-double evaluation from the exact",
+    "differences (head + tail), which settles almost every near-degenerate query; stages B (exact",
+    "expansion of the rounded-difference determinant) and C (first-order tails) follow only for the",
+    "few it leaves. Rows outside this section are unchanged code paths (filters, small-integer path)",
+    "and move with the load only.",
 ]
 open(readme_path, "w").write("\n".join(lines) + "\n")
 PY

@@ -2,8 +2,10 @@
 #include <memory>
 #include <string>
 
+#include "cavity/core/cdt_validate.h"
 #include "cavity/core/error.h"
 #include "cavity/core/mesh_io.h"
+#include "cavity/core/plc.h"
 #include "cavity/core/point_io.h"
 #include "cavity/core/validate.h"
 #include "commands.h"
@@ -15,11 +17,36 @@ namespace {
 struct CheckArgs {
     std::string points;
     std::string mesh;
+    std::string poly;
     bool weighted = false;
     bool quiet = false;
 };
 
+/// --poly: the mesh must be the constrained Delaunay tetrahedralization of the PLC.
+void run_cdt_check(const CheckArgs& args) {
+    const core::Plc plc = core::read_poly(args.poly);
+    const auto tets = core::read_ele(args.mesh, plc.points.index_base);
+    const core::CdtValidation report = core::validate_cdt(plc, tets);
+    if (!report.ok()) {
+        std::string message = args.mesh + ": not the constrained Delaunay tetrahedralization of " +
+                              args.poly + " (" + std::to_string(report.problem_count) +
+                              " problem(s)):";
+        for (const auto& p : report.problems) {
+            message += "\n  " + p;
+        }
+        throw core::Error(message);
+    }
+    if (!args.quiet) {
+        std::printf("valid: constrained Delaunay tetrahedralization of %s (%zu tetrahedra)\n",
+                    args.poly.c_str(), tets.size());
+    }
+}
+
 void run_check(const CheckArgs& args) {
+    if (!args.poly.empty()) {
+        run_cdt_check(args);
+        return;
+    }
     const core::PointSet points = core::read_points(args.points, args.weighted);
     const auto tets = core::read_ele(args.mesh, points.index_base);
     const core::ValidationReport report = core::validate(points, tets);
@@ -55,6 +82,9 @@ void add_check_command(CLI::App& app) {
     cmd->add_option("points", args->points, "the points (.node, .xyz, .ply)")->required();
     cmd->add_option("mesh", args->mesh, "the tetrahedra (.ele), numbered like the points")->required();
     cmd->add_flag("--weighted", args->weighted, "weighted Delaunay (weights from the point file)");
+    cmd->add_option("--poly", args->poly,
+                    "check a constrained Delaunay tetrahedralization of this PLC (TetGen .poly; "
+                    "the points are read from it)");
     cmd->add_flag("--quiet", args->quiet, "print only problems");
     cmd->callback([args] { run_check(*args); });
 }

@@ -77,6 +77,43 @@ awk 'NR>1 && !/^#/ {for (i=2;i<=5;i++) if ($i==0 || $i==7 || $i==62 || $i==124) 
 "$cavity" triangulate grid.node -o bad_delete --delete 125 --quiet 2>err.txt && fail "delete: out-of-range id accepted"
 grep -q "not in" err.txt || fail "delete: message '$(cat err.txt)'"
 
+# cavity cdt and cavity check --poly: a box split by a square through its middle.
+cat > box.poly <<'POLY'
+12 3 0 0
+1 0 0 0
+2 2 0 0
+3 2 2 0
+4 0 2 0
+5 0 0 2
+6 2 0 2
+7 2 2 2
+8 0 2 2
+9 0 0 1
+10 2 0 1
+11 2 2 1
+12 0 2 1
+7 0
+1
+4 1 2 3 4
+1
+4 5 6 7 8
+1
+6 1 2 10 6 5 9
+1
+6 2 3 11 7 6 10
+1
+6 3 4 12 8 7 11
+1
+6 4 1 9 5 8 12
+1
+4 9 10 11 12
+0
+POLY
+"$cavity" cdt box.poly -o box --quiet || fail "cdt: failed"
+"$cavity" check box.node box.ele --poly box.poly --quiet || fail "check --poly rejects a valid CDT"
+awk 'NR==2 {t=$3; $3=$4; $4=t} {print}' box.ele > box_flipped.ele
+"$cavity" check box.node box_flipped.ele --poly box.poly --quiet 2>/dev/null && fail "check --poly accepts a flipped tetrahedron"
+
 # VTU output.
 "$cavity" triangulate cube.node -o cube --format vtu --quiet || fail "vtu: failed"
 grep -q "UnstructuredGrid" cube.vtu || fail "vtu: not a VTK XML file"
