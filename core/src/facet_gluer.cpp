@@ -1,5 +1,6 @@
 #include "cavity/core/facet_gluer.h"
 
+#include "cavity/core/error.h"
 
 namespace cavity::core {
 
@@ -12,6 +13,10 @@ std::uint64_t edge_key(VertexId p, VertexId q) { return (static_cast<std::uint64
 void FacetGluer::begin(std::size_t faces) {
     use_matrix_ = faces / 2 + 2 <= kMatrixSide;
     locals_ = 0;
+}
+
+void FacetGluer::throw_too_many_vertices() {
+    throw Error("internal error: a cavity boundary has more vertices than its faces allow");
 }
 
 std::size_t FacetGluer::slot(std::uint64_t edge) const {

@@ -27,6 +27,11 @@ public:
         std::size_t i = ((v * 0x9E37'79B9u) >> 24) & (kLocalSlots - 1);
         while (local_table_[i].vertex != v) {
             if (local_table_[i].vertex == kNoVertex) {
+                // A cavity boundary is a sphere with F/2 + 2 vertices, which begin() checked
+                // against the matrix; more would mean a corrupt cavity, never a memory overrun.
+                if (locals_ == kMatrixSide) [[unlikely]] {
+                    throw_too_many_vertices();
+                }
                 local_table_[i] = Local{v, locals_++};
                 local_touched_.push_back(static_cast<std::uint32_t>(i));
                 break;
@@ -69,6 +74,7 @@ private:
         HalfFacet value;
     };
 
+    [[noreturn]] static void throw_too_many_vertices();
     std::size_t slot(std::uint64_t edge) const;
     void grow();
 
