@@ -181,6 +181,8 @@ core::Triangulation delete_listed(const core::PointSet& points,
                                   const std::vector<std::uint64_t>& listed) {
     core::Triangulation result = core::delete_vertices(points, tri, zero_based(points, listed));
     result.counters = tri.counters;
+    result.counters.duplicates = result.duplicates.size();
+    result.counters.redundant = result.redundant.size();
     return result;
 }
 

@@ -97,6 +97,8 @@ void run(const Prepared& prep,
     });
     if constexpr (Observer::kCounting) {
         out.counters = *observer.counters();
+        out.counters.duplicates = out.duplicates.size();
+        out.counters.redundant = out.redundant.size();
         if constexpr (requires { storage.probes(); }) {
             out.counters.hash_probes = storage.probes();
         }
