@@ -12,6 +12,7 @@
 #include "cavity/core/random.h"
 #include "cavity/core/star.h"
 #include "cavity/core/triangulate.h"
+#include "canonical.h"
 #include "cavity/predicates/orient3d.h"
 
 namespace cavity::core {
@@ -19,14 +20,7 @@ namespace {
 
 using Tets = std::vector<std::array<std::uint32_t, 4>>;
 
-/// Each tetrahedron as its sorted vertex set, the list sorted: equal for the same complex.
-Tets canonical(Tets tets) {
-    for (auto& t : tets) {
-        std::sort(t.begin(), t.end());
-    }
-    std::sort(tets.begin(), tets.end());
-    return tets;
-}
+using test::canonical;
 
 /// Orders each tetrahedron positively.
 Tets oriented(const PointSet& ps, Tets tets) {

@@ -10,6 +10,7 @@
 #include "cavity/core/generate.h"
 #include "cavity/core/gift_wrap.h"
 #include "cavity/core/triangulate.h"
+#include "canonical.h"
 #include "cavity/core/validate.h"
 
 namespace cavity::core {
@@ -17,19 +18,9 @@ namespace {
 
 using Tets = std::vector<std::array<std::uint32_t, 4>>;
 
-Tets canonical(Tets tets) {
-    for (auto& t : tets) {
-        std::sort(t.begin(), t.end());
-    }
-    std::sort(tets.begin(), tets.end());
-    return tets;
-}
+using test::canonical;
 
-Triangulation bowyer_watson(const PointSet& ps) {
-    std::vector<std::uint32_t> seq(ps.size());
-    std::iota(seq.begin(), seq.end(), 0u);
-    return triangulate(ps, seq, {});
-}
+Triangulation bowyer_watson(const PointSet& ps) { return test::triangulate_in_input_order(ps); }
 
 void expect_same_as_bowyer_watson(const PointSet& ps) {
     const GiftWrapResult wrapped = gift_wrap_delaunay(ps);

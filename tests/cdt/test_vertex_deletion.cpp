@@ -13,6 +13,7 @@
 #include "cavity/core/random.h"
 #include "cavity/core/star.h"
 #include "cavity/core/triangulate.h"
+#include "canonical.h"
 #include "cavity/core/vertex_deletion.h"
 
 namespace cavity::core {
@@ -20,19 +21,9 @@ namespace {
 
 using Tets = std::vector<std::array<std::uint32_t, 4>>;
 
-Tets canonical(Tets tets) {
-    for (auto& t : tets) {
-        std::sort(t.begin(), t.end());
-    }
-    std::sort(tets.begin(), tets.end());
-    return tets;
-}
+using test::canonical;
 
-Triangulation bowyer_watson(const PointSet& ps) {
-    std::vector<std::uint32_t> seq(ps.size());
-    std::iota(seq.begin(), seq.end(), 0u);
-    return triangulate(ps, seq, {});
-}
+Triangulation bowyer_watson(const PointSet& ps) { return test::triangulate_in_input_order(ps); }
 
 /// Bowyer-Watson on the points not deleted, mapped back to the original indices. Dropping points
 /// keeps the relative order of the others' keys, so the perturbation decides the same way.

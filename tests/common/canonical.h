@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <numeric>
 #include <vector>
+
+#include "cavity/core/triangulate.h"
 
 namespace cavity::test {
 
@@ -15,6 +18,14 @@ inline std::vector<std::array<std::uint32_t, 4>> canonical(std::vector<std::arra
     }
     std::sort(tets.begin(), tets.end());
     return tets;
+}
+
+/// Bowyer–Watson in input order with the default options: the reference other constructions
+/// (gift-wrapping, deletion) are compared with.
+inline core::Triangulation triangulate_in_input_order(const core::PointSet& points) {
+    std::vector<std::uint32_t> sequence(points.size());
+    std::iota(sequence.begin(), sequence.end(), 0u);
+    return core::triangulate(points, sequence, core::TriangulateOptions{});
 }
 
 }  // namespace cavity::test
