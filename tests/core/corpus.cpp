@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "cavity/core/generate.h"
+#include "cavity/core/random.h"
 
 namespace cavity::test {
 
@@ -75,6 +76,20 @@ std::vector<Point3> with_duplicates() {
     return points;
 }
 
+// Coordinates of wildly different magnitudes in one set: 1e+-300, subnormals and ordinary values
+// side by side, so that single queries span the whole exponent range of a double.
+PointSet mixed_magnitudes(std::size_t n) {
+    core::Random random(13);
+    const double scales[] = {1e300, -1e300, 1e-300, 5e-324, 1.0, 3e-310};
+    std::vector<Point3> points;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto scale = [&] { return scales[random.below(6)]; };
+        points.push_back({scale() * random.uniform01(), scale() * random.uniform01(),
+                          scale() * random.uniform01()});
+    }
+    return from(std::move(points), "mixed magnitudes");
+}
+
 }  // namespace
 
 std::vector<CorpusCase> degenerate_corpus() {
@@ -93,6 +108,8 @@ std::vector<CorpusCase> degenerate_corpus() {
     corpus.push_back({"grid_subnormal", scaled(generated("grid", 64), 1e-310), 6 * 3 * 3 * 3});
     corpus.push_back({"cospherical_1e300", scaled(generated("cospherical", 60), 1e300), -1});
     corpus.push_back({"grid_offset", offset(generated("grid", 64), 1e9), -1});
+    corpus.push_back({"grid_offset_1e15", offset(generated("grid", 64), 1e15), 6 * 3 * 3 * 3});
+    corpus.push_back({"mixed_magnitudes", mixed_magnitudes(100), -1});
     corpus.push_back({"moment", generated("moment", 20), (20 - 2) * (20 - 3) / 2});
     corpus.push_back({"skew_lines", generated("skew-lines", 30), 14 * 14});
     corpus.push_back({"cube_uniform", generated("cube", 300), -1});
