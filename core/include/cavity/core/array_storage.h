@@ -19,7 +19,6 @@ struct alignas(32) ArrayRecord {
 class ArrayStorage : public TetPool<ArrayRecord> {
 public:
     static constexpr bool kExplicitAdjacency = true;
-    static constexpr const char* kName = "array";
 
     /// AddTetrahedron: v must be positively oriented (ghost vertex, if any, in slot 3). The new
     /// tetrahedron's facets are unglued until glue() is called for them.

@@ -21,7 +21,6 @@ struct HashRecord {
 class FaceHashStorage : public TetPool<HashRecord> {
 public:
     static constexpr bool kExplicitAdjacency = false;
-    static constexpr const char* kName = "hash";
 
     void reserve(std::size_t tets, std::size_t vertices);
 
