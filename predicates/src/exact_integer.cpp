@@ -144,23 +144,23 @@ void add_squared_lengths(std::array<Row, R>& rows) {
     }
 }
 
+/// The coordinates of the points, in order, as dyadic numbers.
+template <class... Points>
+std::array<Dyadic, 3 * sizeof...(Points)> coordinates(const Points&... points) {
+    std::array<Dyadic, 3 * sizeof...(Points)> out{};
+    std::size_t i = 0;
+    for (const Point3& p : {Point3{points.x, points.y, points.z}...}) {
+        out[i++] = to_dyadic(p.x);
+        out[i++] = to_dyadic(p.y);
+        out[i++] = to_dyadic(p.z);
+    }
+    return out;
+}
+
 }  // namespace
 
 Sign orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
-    const std::array<Dyadic, 12> coords = {
-        to_dyadic(a.x),
-        to_dyadic(a.y),
-        to_dyadic(a.z),
-        to_dyadic(b.x),
-        to_dyadic(b.y),
-        to_dyadic(b.z),
-        to_dyadic(c.x),
-        to_dyadic(c.y),
-        to_dyadic(c.z),
-        to_dyadic(d.x),
-        to_dyadic(d.y),
-        to_dyadic(d.z),
-    };
+    const std::array<Dyadic, 12> coords = coordinates(a, b, c, d);
     std::array<Row, 3> rows;
     scaled_differences(coords, finite_scale(min_exponent(coords)), rows);
     Integer det;
@@ -171,23 +171,7 @@ Sign orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Poi
 
 Sign insphere_exact(
     const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
-    const std::array<Dyadic, 15> coords = {
-        to_dyadic(a.x),
-        to_dyadic(a.y),
-        to_dyadic(a.z),
-        to_dyadic(b.x),
-        to_dyadic(b.y),
-        to_dyadic(b.z),
-        to_dyadic(c.x),
-        to_dyadic(c.y),
-        to_dyadic(c.z),
-        to_dyadic(d.x),
-        to_dyadic(d.y),
-        to_dyadic(d.z),
-        to_dyadic(e.x),
-        to_dyadic(e.y),
-        to_dyadic(e.z),
-    };
+    const std::array<Dyadic, 15> coords = coordinates(a, b, c, d, e);
     std::array<Row, 4> rows;
     scaled_differences(coords, finite_scale(min_exponent(coords)), rows);
     add_squared_lengths(rows);
@@ -199,23 +183,7 @@ Sign orient4d_exact(const WeightedPoint3& a,
                     const WeightedPoint3& c,
                     const WeightedPoint3& d,
                     const WeightedPoint3& e) {
-    const std::array<Dyadic, 15> coords = {
-        to_dyadic(a.x),
-        to_dyadic(a.y),
-        to_dyadic(a.z),
-        to_dyadic(b.x),
-        to_dyadic(b.y),
-        to_dyadic(b.z),
-        to_dyadic(c.x),
-        to_dyadic(c.y),
-        to_dyadic(c.z),
-        to_dyadic(d.x),
-        to_dyadic(d.y),
-        to_dyadic(d.z),
-        to_dyadic(e.x),
-        to_dyadic(e.y),
-        to_dyadic(e.z),
-    };
+    const std::array<Dyadic, 15> coords = coordinates(a, b, c, d, e);
     const std::array<Dyadic, 5> weights = {
         to_dyadic(a.w),
         to_dyadic(b.w),
