@@ -23,6 +23,18 @@
 /// deleting a constrained facet) is held back and retried after the next flip.
 namespace cavity::core {
 
+/// The work of one FlipInsertPolygon call: Proposition 5.5 bounds its flips by m^2 and its events
+/// by O(m^2) (so O(m^2 log m) time), m being the number of vertices of the region R.
+struct PolygonWork {
+    std::uint32_t facet = 0;              ///< 0-based index in Plc::facets
+    std::uint64_t region_vertices = 0;    ///< m
+    std::uint64_t region_tets = 0;        ///< |R| when the polygon is inserted
+    std::uint64_t rotary_steps = 0;       ///< tetrahedra visited by step 1's rotary search
+    std::uint64_t search_visited = 0;     ///< tetrahedra visited by step 2's depth-first search
+    std::uint64_t flips = 0;              ///< flips performed
+    std::uint64_t events_queued = 0;
+};
+
 /// Work of polygon insertion, for Propositions 5.5-5.6 (fewer than m^2 flips, O(m^2 log m) events).
 struct PolygonInsertionCounters {
     std::uint64_t polygons = 0;
@@ -35,6 +47,7 @@ struct PolygonInsertionCounters {
     std::uint64_t events_held = 0;      ///< held back as inadmissible (each time)
     std::uint64_t max_region_vertices = 0;
     RetriangulationCounters flips;
+    std::vector<PolygonWork> per_polygon;  ///< one record per inserted polygon, in order
 };
 
 /// Triangles of the complex that lie in a polygon, as sorted vertex triples.
