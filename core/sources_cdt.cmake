@@ -12,6 +12,7 @@ target_sources(cavity_core PRIVATE
   src/read_poly.cpp
   src/edge_protection.cpp
   src/polygon_insertion.cpp
+  src/polygon_region.cpp
   src/cdt_validate.cpp
   src/cdt.cpp
 )

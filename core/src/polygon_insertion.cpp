@@ -4,11 +4,13 @@
 #include <map>
 #include <queue>
 #include <string>
+#include <unordered_set>
 
 #include "cavity/core/error.h"
 #include "cavity/core/flips.h"
 #include "cavity/core/star.h"
 #include "exact_plane.h"
+#include "polygon_region.h"
 
 namespace cavity::core {
 
@@ -76,19 +78,22 @@ public:
         : storage_(storage),
           geometry_(geometry),
           plc_(plc),
-          facet_(plc.facets[facet]),
+          facet_(geometry, plc, plc.facets[facet]),
           name_("facet " + std::to_string(facet + static_cast<std::size_t>(plc.points.index_base)) +
                 " (line " + std::to_string(plc.facets[facet].line) + ")"),
-          plane_(*ExactPlane::of_facet(plc, plc.facets[facet])),
           constrained_(constrained),
-          counters_(counters) {}
+          counters_(counters) {
+        work_.facet = static_cast<std::uint32_t>(facet);
+    }
 
     std::vector<std::array<VertexId, 3>> run() {
         find_region();
-        for (TetId t = 0; t < in_region_.size(); ++t) {
-            if (!in_region_[t]) {
-                continue;
-            }
+        const std::uint64_t flips_before = total_flips();
+        const std::uint64_t events_before = counters_.events_queued;
+        // Step 3, in tetrahedron order so that exactly simultaneous events keep a fixed order.
+        std::vector<TetId> region = region_.tets;
+        std::sort(region.begin(), region.end());
+        for (TetId t : region) {
             for (int f = 0; f < 4; ++f) {
                 const HalfFacet h = storage_.adjacent(t, f);
                 if (h != kNoHalfFacet && tet_of(h) > t) {
@@ -97,82 +102,37 @@ public:
             }
         }
         drain_queue();
-        return finish();
+        auto faces = finish();
+        work_.flips = total_flips() - flips_before;
+        work_.events_queued = counters_.events_queued - events_before;
+        counters_.per_polygon.push_back(work_);
+        return faces;
     }
 
 private:
-    int side(VertexId v) {
-        auto it = side_.find(v);
-        if (it == side_.end()) {
-            const Rational d = plane_.offset(geometry_.point(v));
-            it = side_.emplace(v, std::make_pair(d > 0 ? 1 : d < 0 ? -1 : 0, d)).first;
+    std::uint64_t total_flips() const {
+        std::uint64_t n = 0;
+        for (std::uint64_t k : counters_.flips.flips) {
+            n += k;
         }
-        return it->second.first;
+        return n;
     }
-    /// The speed of v's height: d(v) for a right vertex, 0 otherwise (only right vertices rise).
-    Rational speed(VertexId v) {
-        return side(v) > 0 ? side_.at(v).second : Rational(0);
-    }
-    bool in_region(TetId t) const { return t < in_region_.size() && in_region_[t]; }
-    void mark(TetId t) {
-        if (t >= in_region_.size()) {
-            in_region_.resize(t + 1, false);
-        }
-        in_region_[t] = true;
-    }
-    bool has_left_and_right(std::span<const VertexId> vs) {
-        bool left = false;
-        bool right = false;
-        for (VertexId v : vs) {
-            if (v == kGhostVertex) {
-                continue;
-            }
-            left = left || side(v) < 0;
-            right = right || side(v) > 0;
-        }
-        return left && right;
-    }
+    bool in_region(TetId t) const { return in_region_.contains(t); }
 
-    /// True when solid tetrahedron t crosses the polygon. Its section by the plane h is a convex
-    /// polygon whose interior avoids every edge and vertex of the complex, hence the polygon's
-    /// boundary (edges of the complex, by edge protection): so the section is inside or outside the
-    /// polygon as a whole, and the crossing point of any left-right edge (a point of the section
-    /// not on the polygon's boundary) decides which.
-    bool crosses_polygon(const TetVertices& v) {
-        for (std::size_t i = 0; i < 4; ++i) {
-            for (std::size_t j = 0; j < 4; ++j) {
-                if (side(v[i]) < 0 && side(v[j]) > 0) {
-                    const ExactPoint x =
-                        plane_.crossing(geometry_.point(v[i]), geometry_.point(v[j]));
-                    return in_facet_region(plc_, facet_, plane_, x);
-                }
-            }
-        }
-        return false;
-    }
-
-    /// Steps 1-2: the region R, the tetrahedra that cross the polygon. Found by a scan of the
-    /// tetrahedra that have a left and a right vertex.
+    /// Steps 1-2: R by the rotary and depth-first searches (polygon_region.h).
     void find_region() {
-        in_region_.assign(storage_.capacity(), false);
-        std::vector<VertexId> vertices;
-        for (TetId t = 0; t < storage_.capacity(); ++t) {
-            if (!storage_.alive(t) || is_ghost(storage_.vertices(t))) {
-                continue;
-            }
-            ++counters_.tets_scanned;
-            const TetVertices& v = storage_.vertices(t);
-            if (has_left_and_right(v) && crosses_polygon(v)) {
-                in_region_[t] = true;
-                ++counters_.region_tets;
-                vertices.insert(vertices.end(), v.begin(), v.end());
-            }
-        }
-        std::sort(vertices.begin(), vertices.end());
-        const auto m = static_cast<std::uint64_t>(
-            std::unique(vertices.begin(), vertices.end()) - vertices.begin());
-        counters_.region_vertices += m;
-        counters_.max_region_vertices = std::max(counters_.max_region_vertices, m);
+        region_ = find_polygon_region(storage_, facet_);
+        in_region_.insert(region_.tets.begin(), region_.tets.end());
+        work_.region_vertices = region_.vertices;
+        work_.region_tets = region_.tets.size();
+        work_.rotary_steps = region_.rotary_steps;
+        work_.search_visited = region_.search_visited;
+        counters_.region_tets += work_.region_tets;
+        counters_.region_vertices += work_.region_vertices;
+        counters_.max_region_vertices =
+            std::max(counters_.max_region_vertices, work_.region_vertices);
+        counters_.rotary_steps += work_.rotary_steps;
+        counters_.search_visited += work_.search_visited;
     }
 
     /// Certify(g, Q) for facet f of tetrahedron t.
@@ -183,7 +143,7 @@ private:
         }
         const TetVertices& sigma = storage_.vertices(t);
         const auto g = facet_vertices(sigma, f);
-        if (!has_left_and_right(g) || constrained_.contains(sorted_triangle(g))) {
+        if (!facet_.has_left_and_right(g) || constrained_.contains(sorted_triangle(g))) {
             return;
         }
         ++counters_.certify_calls;
@@ -215,11 +175,11 @@ private:
         Rational s0 = 0;
         Rational s1 = 0;
         const Rational hq = lift(q);
-        const Rational vq = speed(q);
+        const Rational vq = facet_.speed(q);
         Rational sum = 0;
         for (std::size_t i = 0; i < 4; ++i) {
             s0 += (lift(sigma[i]) - hq) * cofactor[i];
-            s1 += (speed(sigma[i]) - vq) * cofactor[i];
+            s1 += (facet_.speed(sigma[i]) - vq) * cofactor[i];
             sum += cofactor[i];
         }
         if (s1 <= 0) {
@@ -328,9 +288,8 @@ private:
                 continue;
             }
             storage_.end_operation();
-            for (TetId t : created) {
-                mark(t);
-            }
+            in_region_.insert(created.begin(), created.end());
+            created_.insert(created_.end(), created.begin(), created.end());
             for (TetId t : created) {
                 for (int f = 0; f < 4; ++f) {
                     const HalfFacet h = storage_.adjacent(t, f);
@@ -348,62 +307,56 @@ private:
         for (const Event& e : held) {
             if (still_there(e)) {
                 throw Error(located_message(
-                    plc_.source, facet_.line,
+                    plc_.source, facet_.facet().line,
                     name_ + ": polygon insertion stuck on inadmissible flips (the PLC has no "
                             "CDT here; is it edge-protected?)"));
             }
         }
     }
 
-    /// The polygon's triangles, after checking that no tetrahedron crosses it any more.
+    /// The polygon's triangles, after checking that no tetrahedron crosses it any more. Flips
+    /// delete only tetrahedra of R, so the tetrahedra that touch the polygon now are the touching
+    /// ones outside R, which never change, and the survivors of R and of the flips' creations.
     std::vector<std::array<VertexId, 3>> finish() {
-        std::vector<std::array<VertexId, 3>> faces;
-        for (TetId t = 0; t < storage_.capacity(); ++t) {
+        std::vector<TetId> candidates = region_.touching_outside;
+        candidates.insert(candidates.end(), region_.tets.begin(), region_.tets.end());
+        candidates.insert(candidates.end(), created_.begin(), created_.end());
+        std::sort(candidates.begin(), candidates.end());
+        candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+        std::set<std::array<VertexId, 3>> faces;
+        for (TetId t : candidates) {
             if (!storage_.alive(t) || is_ghost(storage_.vertices(t))) {
                 continue;
             }
             const TetVertices& v = storage_.vertices(t);
-            if (in_region(t) && has_left_and_right(v) && crosses_polygon(v)) {
-                throw Error(located_message(plc_.source, facet_.line,
+            if (in_region(t) && facet_.crosses(v)) {
+                throw Error(located_message(plc_.source, facet_.facet().line,
                                             name_ + ": a tetrahedron still crosses the polygon "
                                                     "after every flip"));
             }
             for (int f = 0; f < 4; ++f) {
                 const auto g = facet_vertices(v, f);
-                if (side(g[0]) != 0 || side(g[1]) != 0 || side(g[2]) != 0) {
-                    continue;
-                }
-                const auto key = sorted_triangle(g);
-                if (std::find(faces.begin(), faces.end(), key) != faces.end()) {
-                    continue;
-                }
-                const ExactPoint a = exact_point(geometry_.point(g[0]));
-                const ExactPoint b = exact_point(geometry_.point(g[1]));
-                const ExactPoint c = exact_point(geometry_.point(g[2]));
-                const ExactPoint centroid{(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3,
-                                          (a[2] + b[2] + c[2]) / 3};
-                if (in_facet_region(plc_, facet_, plane_, centroid)) {
-                    faces.push_back(key);
+                if (facet_.holds_triangle(g)) {
+                    faces.insert(sorted_triangle(g));
                 }
             }
         }
-        for (const auto& face : faces) {
-            constrained_.insert(face);
-        }
+        constrained_.insert(faces.begin(), faces.end());
         ++counters_.polygons;
-        return faces;
+        return {faces.begin(), faces.end()};
     }
 
     ArrayStorage& storage_;
     const Geometry& geometry_;
     const Plc& plc_;
-    const PlcFacet& facet_;
+    FacetGeometry facet_;
     std::string name_;
-    ExactPlane plane_;
     ConstrainedFaces& constrained_;
     PolygonInsertionCounters& counters_;
-    std::map<VertexId, std::pair<int, Rational>> side_;
-    std::vector<bool> in_region_;
+    PolygonWork work_;
+    PolygonRegion region_;
+    std::unordered_set<TetId> in_region_;  // R and every tetrahedron the flips created
+    std::vector<TetId> created_;
     std::priority_queue<Event, std::vector<Event>, Later> queue_;
     std::uint64_t next_order_ = 0;
 };
@@ -417,6 +370,24 @@ std::vector<std::array<VertexId, 3>> insert_polygon(ArrayStorage& storage,
                                                     ConstrainedFaces& constrained,
                                                     PolygonInsertionCounters& counters) {
     return PolygonInserter(storage, geometry, plc, facet, constrained, counters).run();
+}
+
+std::vector<TetId> polygon_region(const ArrayStorage& storage,
+                                  const Geometry& geometry,
+                                  const Plc& plc,
+                                  std::size_t facet,
+                                  PolygonWork* work) {
+    FacetGeometry geometry_of_facet(geometry, plc, plc.facets[facet]);
+    PolygonRegion region = find_polygon_region(storage, geometry_of_facet);
+    if (work != nullptr) {
+        *work = PolygonWork{};
+        work->facet = static_cast<std::uint32_t>(facet);
+        work->region_vertices = region.vertices;
+        work->region_tets = region.tets.size();
+        work->rotary_steps = region.rotary_steps;
+        work->search_visited = region.search_visited;
+    }
+    return std::move(region.tets);
 }
 
 }  // namespace cavity::core

@@ -29,8 +29,12 @@ struct PolygonWork {
     std::uint32_t facet = 0;              ///< 0-based index in Plc::facets
     std::uint64_t region_vertices = 0;    ///< m
     std::uint64_t region_tets = 0;        ///< |R| when the polygon is inserted
-    std::uint64_t rotary_steps = 0;       ///< tetrahedra visited by step 1's rotary search
-    std::uint64_t search_visited = 0;     ///< tetrahedra visited by step 2's depth-first search
+    /// Tetrahedra stepped through by step 1: for each loop side, the walk through the star of one
+    /// end to a tetrahedron holding the side, then the ring of tetrahedra around the side.
+    std::uint64_t rotary_steps = 0;
+    /// Tetrahedra first tested by step 2's depth-first search (the neighbours of the tetrahedra
+    /// that touch the polygon); with the rings of step 1, every tetrahedron steps 1-2 look at.
+    std::uint64_t search_visited = 0;
     std::uint64_t flips = 0;              ///< flips performed
     std::uint64_t events_queued = 0;
 };
@@ -40,7 +44,8 @@ struct PolygonInsertionCounters {
     std::uint64_t polygons = 0;
     std::uint64_t region_tets = 0;      ///< tetrahedra crossing a polygon when it is inserted (R)
     std::uint64_t region_vertices = 0;  ///< m summed over polygons: distinct vertices of R
-    std::uint64_t tets_scanned = 0;     ///< tetrahedra tested while finding R
+    std::uint64_t rotary_steps = 0;     ///< PolygonWork::rotary_steps summed over polygons
+    std::uint64_t search_visited = 0;   ///< PolygonWork::search_visited summed over polygons
     std::uint64_t certify_calls = 0;
     std::uint64_t events_queued = 0;
     std::uint64_t events_stale = 0;     ///< dequeued after their facet had gone
@@ -65,5 +70,16 @@ std::vector<std::array<VertexId, 3>> insert_polygon(ArrayStorage& storage,
                                                     std::size_t facet,
                                                     ConstrainedFaces& constrained,
                                                     PolygonInsertionCounters& counters);
+
+/// Steps 1-2 of FlipInsertPolygon alone, leaving the complex unchanged: the region R of facet
+/// `facet` (the solid tetrahedra whose interiors meet the polygon), found as insert_polygon finds
+/// it, by rotary searches around the polygon's sides and a depth-first search of the tetrahedra
+/// touching it. When `work` is given, it receives the facet, m, |R|, rotary_steps and
+/// search_visited (flips and events stay 0).
+std::vector<TetId> polygon_region(const ArrayStorage& storage,
+                                  const Geometry& geometry,
+                                  const Plc& plc,
+                                  std::size_t facet,
+                                  PolygonWork* work = nullptr);
 
 }  // namespace cavity::core
