@@ -44,7 +44,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc, std::size_t index,
                                     std::span<const std::array<std::uint32_t, 4>> tets,
                                     const std::set<Triangle>& triangles, Report& report) {
     const PlcFacet& facet = plc.facets[index];
-    const std::string name = "facet " + std::to_string(index + static_cast<std::size_t>(plc.points.index_base));
+    const std::string name = facet_name(plc, index);
     const auto plane = ExactPlane::of_facet(plc, facet);
     std::vector<Triangle> faces;
     if (!plane) {
@@ -105,10 +105,25 @@ CdtValidation validate_cdt(const Plc& plc, std::span<const std::array<std::uint3
             }
         }
     }
-    const Geometry geometry = geometry_by_index(plc.points);
+    // The complex checks name vertices by their ids: number them as the file does (ids shifted by
+    // the base, keys unchanged so the perturbation is the same), so every message can be matched
+    // against the input.
+    std::vector<std::array<std::uint32_t, 4>> numbered(tets.begin(), tets.end());
+    for (auto& t : numbered) {
+        for (auto& v : t) {
+            v += static_cast<std::uint32_t>(base);
+        }
+    }
+    std::vector<Point3> points(static_cast<std::size_t>(base), Point3{0, 0, 0});
+    points.insert(points.end(), plc.points.points.begin(), plc.points.points.end());
+    std::vector<std::uint32_t> keys(points.size());
+    for (std::size_t v = 0; v < keys.size(); ++v) {
+        keys[v] = static_cast<std::uint32_t>(v < static_cast<std::size_t>(base) ? 0 : v - base);
+    }
+    const Geometry geometry(std::move(points), std::move(keys), {});
     ArrayStorage storage;
     try {
-        storage = complex_from_tets(tets);
+        storage = complex_from_tets(numbered);
     } catch (const Error& e) {
         report.add(e.what());
         return result;
@@ -163,19 +178,20 @@ CdtValidation validate_cdt(const Plc& plc, std::span<const std::array<std::uint3
                 continue;
             }
             const TetVertices& w = storage.vertices(tet_of(h));
-            Triangle g = facet_vertices(v, f);
+            Triangle g = facet_vertices(v, f);  // numbered like the file
             std::sort(g.begin(), g.end());
-            if (constrained.contains(g)) {
+            const auto b = static_cast<std::uint32_t>(base);
+            if (constrained.contains({g[0] - b, g[1] - b, g[2] - b})) {
                 continue;
             }
             const VertexId q = w[static_cast<std::size_t>(facet_of(h))];
-            const auto& p = plc.points.points;
-            if (perturbation::insphere_sos(p[v[0]], p[v[1]], p[v[2]], p[v[3]], p[q],
-                                           {v[0], v[1], v[2], v[3], q}) == Sign::kPos) {
-                report.add("triangle " + std::to_string(g[0] + static_cast<std::uint32_t>(base)) +
-                           " " + std::to_string(g[1] + static_cast<std::uint32_t>(base)) + " " +
-                           std::to_string(g[2] + static_cast<std::uint32_t>(base)) +
-                           " is in no polygon and not locally Delaunay");
+            const auto& gm = geometry;
+            if (perturbation::insphere_sos(
+                    gm.point(v[0]), gm.point(v[1]), gm.point(v[2]), gm.point(v[3]), gm.point(q),
+                    {gm.key(v[0]), gm.key(v[1]), gm.key(v[2]), gm.key(v[3]), gm.key(q)}) ==
+                Sign::kPos) {
+                report.add("triangle " + std::to_string(g[0]) + " " + std::to_string(g[1]) + " " +
+                           std::to_string(g[2]) + " is in no polygon and not locally Delaunay");
             }
         }
     }

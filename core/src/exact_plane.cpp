@@ -1,5 +1,6 @@
 #include "exact_plane.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace cavity::core {
@@ -20,53 +21,129 @@ Rational dot(const ExactPoint& u, const ExactPoint& v) {
 
 bool is_zero(const ExactPoint& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
 
-/// The two coordinates kept by the projection.
-std::array<int, 2> kept_axes(int drop) {
-    return {drop == 0 ? 1 : 0, drop == 2 ? 1 : 2};
+/// A point of the facet's plane, projected one-to-one by dropping one coordinate.
+struct Point2 {
+    Rational u;
+    Rational v;
+};
+
+Point2 project(const ExactPoint& p, int drop) {
+    const std::size_t u = drop == 0 ? 1 : 0;
+    const std::size_t v = drop == 2 ? 1 : 2;
+    return {p[u], p[v]};
 }
 
-/// Crossing number of x with respect to a loop, in the projection: odd when x is inside. The
-/// half-open rule on the second coordinate counts a vertex on the ray once.
-bool inside_loop(const Plc& plc, const std::vector<std::uint32_t>& loop, int drop,
-                 const ExactPoint& x) {
-    const auto [u, v] = kept_axes(drop);
+std::vector<Point2> project_loop(const Plc& plc, const std::vector<std::uint32_t>& loop, int drop) {
+    std::vector<Point2> out;
+    out.reserve(loop.size());
+    for (std::uint32_t c : loop) {
+        out.push_back(project(exact_point(plc.points.points[c]), drop));
+    }
+    return out;
+}
+
+/// Twice the signed area of pqr: positive when r is left of pq.
+Rational orient2(const Point2& p, const Point2& q, const Point2& r) {
+    return (q.u - p.u) * (r.v - p.v) - (q.v - p.v) * (r.u - p.u);
+}
+
+/// True when x lies on the closed segment pq.
+bool on_segment(const Point2& p, const Point2& q, const Point2& x) {
+    return orient2(p, q, x) == 0 && (x.u - p.u) * (x.u - q.u) <= 0 && (x.v - p.v) * (x.v - q.v) <= 0;
+}
+
+LoopPosition position(const std::vector<Point2>& loop, const Point2& x) {
     bool inside = false;
     for (std::size_t i = 0; i < loop.size(); ++i) {
-        const ExactPoint p = exact_point(plc.points.points[loop[i]]);
-        const ExactPoint q = exact_point(plc.points.points[loop[(i + 1) % loop.size()]]);
-        if ((p[v] > x[v]) == (q[v] > x[v])) {
-            continue;
+        const Point2& p = loop[i];
+        const Point2& q = loop[(i + 1) % loop.size()];
+        if (on_segment(p, q, x)) {
+            return LoopPosition::kOnBoundary;
         }
-        // The side's abscissa at ordinate x[v], compared with x[u] without dividing.
-        const Rational t_num = x[v] - p[v];
-        const Rational t_den = q[v] - p[v];
-        const Rational lhs = (p[u] - x[u]) * t_den + (q[u] - p[u]) * t_num;
-        if ((t_den > 0) ? lhs > 0 : lhs < 0) {
+        // Crossing number along the ray from x in direction +u; the half-open rule on v counts a
+        // corner on the ray once.
+        if ((p.v > x.v) != (q.v > x.v) && ((q.v > p.v) == (orient2(p, q, x) > 0))) {
             inside = !inside;
         }
     }
-    return inside;
+    return inside ? LoopPosition::kInside : LoopPosition::kOutside;
 }
 
-Rational loop_area2(const Plc& plc, const std::vector<std::uint32_t>& loop, int drop) {
-    const auto [u, v] = kept_axes(drop);
+/// Which loops of the facet contain x (strictly inside or on their boundary, as `position` says).
+std::vector<bool> containing_loops(const std::vector<std::vector<Point2>>& loops, const Point2& x) {
+    std::vector<bool> in(loops.size());
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+        in[i] = position(loops[i], x) == LoopPosition::kInside;
+    }
+    return in;
+}
+
+SidePieces pieces(const std::vector<Point2>& a, const std::vector<Point2>& b) {
+    SidePieces out;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const Point2& p = a[i];
+        const Point2& q = a[(i + 1) % a.size()];
+        // Cut pq at the corners of b strictly inside it, ordered by their parameter along pq
+        // (compared through the dominant coordinate of q - p, without dividing).
+        const bool by_u = abs(q.u - p.u) >= abs(q.v - p.v);
+        const auto key = [&](const Point2& x) {
+            return by_u ? (x.u - p.u) / (q.u - p.u) : (x.v - p.v) / (q.v - p.v);
+        };
+        std::vector<Rational> cuts{0, 1};
+        for (const Point2& c : b) {
+            if (on_segment(p, q, c)) {
+                const Rational t = key(c);
+                if (t > 0 && t < 1) {
+                    cuts.push_back(t);
+                }
+            }
+        }
+        std::sort(cuts.begin(), cuts.end());
+        cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+        for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+            const Rational t = (cuts[k] + cuts[k + 1]) / 2;
+            const Point2 mid{p.u + t * (q.u - p.u), p.v + t * (q.v - p.v)};
+            switch (position(b, mid)) {
+                case LoopPosition::kInside:
+                    ++out.inside;
+                    break;
+                case LoopPosition::kOutside:
+                    ++out.outside;
+                    break;
+                case LoopPosition::kOnBoundary:
+                    ++out.on_boundary;
+                    break;
+            }
+        }
+    }
+    return out;
+}
+
+Rational loop_area2(const std::vector<Point2>& loop) {
     Rational sum = 0;
     for (std::size_t i = 0; i < loop.size(); ++i) {
-        const ExactPoint p = exact_point(plc.points.points[loop[i]]);
-        const ExactPoint q = exact_point(plc.points.points[loop[(i + 1) % loop.size()]]);
-        sum += p[u] * q[v] - q[u] * p[v];
+        const Point2& p = loop[i];
+        const Point2& q = loop[(i + 1) % loop.size()];
+        sum += p.u * q.v - q.u * p.v;
     }
     return abs(sum);
 }
 
-/// How many other loops of the facet contain loop i (tested at its first corner).
-int depth(const Plc& plc, const PlcFacet& facet, std::size_t i, int drop) {
-    const ExactPoint x = exact_point(plc.points.points[facet.loops[i].front()]);
-    int d = 0;
-    for (std::size_t j = 0; j < facet.loops.size(); ++j) {
-        d += (j != i && inside_loop(plc, facet.loops[j], drop, x)) ? 1 : 0;
+/// contains[i][j]: loop j encloses loop i (for non-crossing loops). Two loops with the same
+/// boundary enclose each other; the later one is taken as the inner, so that "inside" stays a
+/// strict order and every face has one innermost loop.
+std::vector<std::vector<bool>> nesting(const std::vector<std::vector<Point2>>& loops) {
+    std::vector<std::vector<bool>> contains(loops.size(), std::vector<bool>(loops.size(), false));
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+        for (std::size_t j = 0; j < loops.size(); ++j) {
+            if (i == j) {
+                continue;
+            }
+            const SidePieces s = pieces(loops[i], loops[j]);
+            contains[i][j] = s.inside > 0 || (s.outside == 0 && i > j);
+        }
     }
-    return d;
+    return contains;
 }
 
 }  // namespace
@@ -123,28 +200,80 @@ ExactPoint ExactPlane::crossing(const Point3& p, const Point3& q) const {
     return {ep[0] + t * (eq[0] - ep[0]), ep[1] + t * (eq[1] - ep[1]), ep[2] + t * (eq[2] - ep[2])};
 }
 
-bool in_facet_region(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane,
+bool in_facet_region(const Plc& plc,
+                     const PlcFacet& facet,
+                     const ExactPlane& plane,
                      const ExactPoint& x) {
-    bool inside = false;
+    std::vector<std::vector<Point2>> loops;
     for (const auto& loop : facet.loops) {
-        inside = inside != inside_loop(plc, loop, plane.dropped_axis(), x);
+        loops.push_back(project_loop(plc, loop, plane.dropped_axis()));
     }
-    return inside;
+    const std::vector<bool> face = containing_loops(loops, project(x, plane.dropped_axis()));
+    if (std::find(face.begin(), face.end(), true) == face.end()) {
+        return false;
+    }
+    for (const Point3& h : facet.holes) {
+        if (containing_loops(loops, project(exact_point(h), plane.dropped_axis())) == face) {
+            return false;
+        }
+    }
+    return true;
 }
 
 Rational facet_region_area2(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane) {
+    const int drop = plane.dropped_axis();
+    std::vector<std::vector<Point2>> loops;
+    for (const auto& loop : facet.loops) {
+        loops.push_back(project_loop(plc, loop, drop));
+    }
+    const auto contains = nesting(loops);
+    const std::size_t n = loops.size();
+    // The face just inside loop i is inside exactly i and the loops that enclose i.
+    std::vector<std::vector<bool>> face(n);
+    std::vector<std::size_t> depth(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        face[i] = contains[i];
+        face[i][i] = true;
+        depth[i] = static_cast<std::size_t>(std::count(contains[i].begin(), contains[i].end(), true));
+    }
+    std::vector<std::vector<bool>> holes;
+    for (const Point3& h : facet.holes) {
+        holes.push_back(containing_loops(loops, project(exact_point(h), drop)));
+    }
     Rational area = 0;
-    for (std::size_t i = 0; i < facet.loops.size(); ++i) {
-        const Rational a = loop_area2(plc, facet.loops[i], plane.dropped_axis());
-        area += depth(plc, facet, i, plane.dropped_axis()) % 2 == 0 ? a : Rational(-a);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (std::find(holes.begin(), holes.end(), face[i]) != holes.end()) {
+            continue;
+        }
+        area += loop_area2(loops[i]);
+        // Minus the children: the loops whose innermost enclosing loop is i.
+        for (std::size_t c = 0; c < n; ++c) {
+            if (contains[c][i] && depth[c] == depth[i] + 1) {
+                area -= loop_area2(loops[c]);
+            }
+        }
     }
     return area;
 }
 
+LoopPosition loop_position(const Plc& plc,
+                           const std::vector<std::uint32_t>& loop,
+                           int drop,
+                           const ExactPoint& x) {
+    return position(project_loop(plc, loop, drop), project(x, drop));
+}
+
+SidePieces side_pieces(const Plc& plc,
+                       const std::vector<std::uint32_t>& a,
+                       const std::vector<std::uint32_t>& b,
+                       int drop) {
+    return pieces(project_loop(plc, a, drop), project_loop(plc, b, drop));
+}
+
 Rational triangle_area2(const ExactPlane& plane, const Point3& a, const Point3& b, const Point3& c) {
-    Plc tri;
-    tri.points.points = {a, b, c};
-    return loop_area2(tri, {0, 1, 2}, plane.dropped_axis());
+    const int drop = plane.dropped_axis();
+    return loop_area2(
+        {project(exact_point(a), drop), project(exact_point(b), drop), project(exact_point(c), drop)});
 }
 
 }  // namespace cavity::core

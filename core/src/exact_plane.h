@@ -46,15 +46,40 @@ private:
     int drop_ = 2;
 };
 
-/// True when x (a point of the facet's plane, not on any loop side) lies in the facet's region: inside
-/// an odd number of its loops (the even-odd rule, so a loop nested in another cuts a hole). Exact
-/// crossing-number tests in the projection that drops `plane.dropped_axis()`.
+/// True when x (a point of the facet's plane, not on any loop side) lies in the facet's region, by
+/// TetGen's rule (see PlcFacet): x is inside at least one loop, and no hole point of the facet lies
+/// in the same face of the loops' arrangement, i.e. no hole point is inside exactly the same loops
+/// as x. Exact, in the projection that drops `plane.dropped_axis()`.
 bool in_facet_region(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane,
                      const ExactPoint& x);
 
-/// Twice the area of the facet's region, measured in the projection (exact): each loop's absolute
-/// area, negated when an odd number of other loops contain it (loops must not cross).
+/// Twice the area of the facet's region (the same rule), measured in the projection (exact). With
+/// non-crossing loops every face of the arrangement is "inside loop L, outside L's children": its
+/// area is L's minus its children's, and it counts unless a hole point lies in it.
 Rational facet_region_area2(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane);
+
+/// Where a point of the plane lies with respect to one loop, in the projection.
+enum class LoopPosition { kOutside, kOnBoundary, kInside };
+LoopPosition loop_position(const Plc& plc,
+                           const std::vector<std::uint32_t>& loop,
+                           int drop,
+                           const ExactPoint& x);
+
+/// How the sides of loop `a` lie with respect to loop `b` (coplanar): each side is cut at the
+/// corners of b that lie on it and each piece is classified by its midpoint. For loops whose sides
+/// do not cross, a piece is wholly inside, outside or on b: `a` is nested in b when it has pieces
+/// inside and none outside, and the two loops overlap without nesting (they cross) when either has
+/// pieces both inside and outside the other.
+struct SidePieces {
+    std::size_t inside = 0;
+    std::size_t outside = 0;
+    std::size_t on_boundary = 0;
+};
+
+SidePieces side_pieces(const Plc& plc,
+                       const std::vector<std::uint32_t>& a,
+                       const std::vector<std::uint32_t>& b,
+                       int drop);
 
 /// Twice the absolute area of triangle abc in the same projection.
 Rational triangle_area2(const ExactPlane& plane, const Point3& a, const Point3& b, const Point3& c);

@@ -121,9 +121,8 @@ Point3 hole_point(PolyParser& in, const std::vector<std::string_view>& tokens) {
     return {in.number(tokens[1], "x"), in.number(tokens[2], "y"), in.number(tokens[3], "z")};
 }
 
-void check_facet(PolyParser& in, const Plc& plc, const PlcFacet& facet, std::uint64_t index) {
-    const std::string name = "facet " + std::to_string(index) + " (line " +
-                             std::to_string(facet.line) + ")";
+void check_facet(PolyParser& in, const Plc& plc, const PlcFacet& facet) {
+    const std::string name = "facet " + std::to_string(facet.number);
     const auto plane = ExactPlane::of_facet(plc, facet);
     if (!plane && !facet.loops.empty()) {
         in.source().fail(facet.line, name + ": its corners are collinear");
@@ -142,9 +141,21 @@ void check_facet(PolyParser& in, const Plc& plc, const PlcFacet& facet, std::uin
             }
         }
     }
-    for (const Point3& h : facet.holes) {
-        if (plane && plane->side(h) != predicates::Sign::kZero) {
-            in.source().fail(facet.line, name + ": a hole point is not in the plane of the facet");
+    for (std::size_t h = 0; h < facet.holes.size(); ++h) {
+        const std::string hole = name + ": hole point " + std::to_string(h + 1);
+        if (!plane) {
+            continue;
+        }
+        if (plane->side(facet.holes[h]) != predicates::Sign::kZero) {
+            in.source().fail(facet.line, hole + " is not in the plane of the facet");
+        }
+        for (const auto& loop : facet.loops) {
+            if (loop_position(plc, loop, plane->dropped_axis(), exact_point(facet.holes[h])) ==
+                LoopPosition::kOnBoundary) {
+                in.source().fail(facet.line,
+                                 hole + " lies on a polygon side, so the face it removes is "
+                                        "ambiguous");
+            }
         }
     }
 }
@@ -163,6 +174,7 @@ void read_facets_part(PolyParser& in, Plc& plc) {
         }
         PlcFacet facet;
         facet.line = in.line();
+        facet.number = f + static_cast<std::uint64_t>(plc.points.index_base);
         const std::uint64_t polygons = in.count(fh[0], "number of polygons");
         const std::uint64_t holes = fh.size() > 1 ? in.count(fh[1], "number of holes") : 0;
         if (markers && fh.size() > 2) {
@@ -196,7 +208,7 @@ void read_facets_part(PolyParser& in, Plc& plc) {
         for (std::uint64_t h = 0; h < holes; ++h) {
             facet.holes.push_back(hole_point(in, in.next("a facet hole")));
         }
-        check_facet(in, plc, facet, f + static_cast<std::uint64_t>(plc.points.index_base));
+        check_facet(in, plc, facet);
         if (!facet.loops.empty()) {
             plc.facets.push_back(std::move(facet));
         }
@@ -204,6 +216,14 @@ void read_facets_part(PolyParser& in, Plc& plc) {
 }
 
 }  // namespace
+
+std::string facet_name(const Plc& plc, std::size_t f) {
+    const PlcFacet& facet = plc.facets[f];
+    if (facet.line == 0) {
+        return "facet " + std::to_string(f + static_cast<std::size_t>(plc.points.index_base));
+    }
+    return "facet " + std::to_string(facet.number) + " (line " + std::to_string(facet.line) + ")";
+}
 
 std::vector<std::array<std::uint32_t, 2>> plc_edges(const Plc& plc) {
     std::vector<std::array<std::uint32_t, 2>> edges;

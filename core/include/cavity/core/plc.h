@@ -13,25 +13,36 @@
 /// (the perturbation keys); `points.index_base` keeps the file's numbering for output.
 namespace cavity::core {
 
-/// One TetGen facet: coplanar loops (polygons of 3 or more corners) that do not cross. Its region
-/// is given by the even-odd rule: the points inside an odd number of loops, so a loop nested in
-/// another is a hole. The facet's hole points are kept but not needed by that rule (TetGen uses
-/// them to carve holes; a loop nested without a hole point is therefore read differently).
+/// One TetGen facet: coplanar loops (polygons of 3 or more corners) whose sides do not cross, and
+/// hole points. Its region follows TetGen's .poly semantics: the union of the loops' interiors,
+/// minus every face of the loops' arrangement that holds a hole point. With non-crossing loops a
+/// face is "inside loop L, outside L's children", so a loop nested in another cuts a hole only when
+/// a hole point lies inside it and outside its own children (without one, the nested loop just
+/// subdivides the region); a hole point outside every loop removes nothing. Two faces enclosed by
+/// the same loops count as one face (a loop whose children split it is carved as a whole). A hole
+/// point on a loop side is refused (read_poly, plc_violations).
 /// Two-corner polygons of the facet are segments and go to Plc::segments.
 struct PlcFacet {
     std::vector<std::vector<std::uint32_t>> loops;
     std::vector<Point3> holes;
     int marker = 0;
-    std::size_t line = 0;  ///< line of the facet header in the .poly file, for messages
+    std::size_t line = 0;    ///< line of the facet header in the .poly file (0: not from a file)
+    std::size_t number = 0;  ///< position in the file's facet list, numbered like the points
 };
 
 struct Plc {
     PointSet points;
     std::vector<PlcFacet> facets;
     std::vector<std::array<std::uint32_t, 2>> segments;  ///< explicit segments (2-corner polygons)
-    std::vector<Point3> volume_holes;                    ///< read, not used by the CDT
+    /// Read but not used: the CDT tetrahedralizes the whole convex hull of the points, and
+    /// carving volumes out of it is left to the caller.
+    std::vector<Point3> volume_holes;
     std::string source;
 };
+
+/// "facet N (line L)" with N as the file numbers its facets; for a PLC not read from a file (line
+/// 0), N is the position in `facets` plus points.index_base.
+std::string facet_name(const Plc& plc, std::size_t f);
 
 /// Every PLC edge (the explicit segments and the sides of every loop), each once as {min, max}.
 std::vector<std::array<std::uint32_t, 2>> plc_edges(const Plc& plc);
@@ -40,8 +51,9 @@ std::vector<std::array<std::uint32_t, 2>> plc_edges(const Plc& plc);
 /// from the `.node` file of the same name); part 2 lists the facets: `<#polygons> [<#holes>
 /// [<marker>]]`, then each polygon `<#corners> c1 c2 ...`, then each hole `<i> x y z`; part 3 the
 /// volume holes; a region part, if present, is ignored. Loops of one facet must be coplanar, with
-/// distinct corners and no three consecutive corners collinear-degenerate (a loop with all corners
-/// collinear is refused).
+/// distinct corners, not all collinear; hole points must lie in the facet's plane and on no loop
+/// side. Whether the result is a PLC (polygons meeting only along shared sides) is checked by
+/// plc_violations (plc_validity.h), which needs the Delaunay triangulation of the points.
 /// \throws Error naming the file and line of any malformed, truncated or inconsistent entry.
 Plc read_poly(const std::filesystem::path& file);
 
