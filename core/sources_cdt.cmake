@@ -11,6 +11,7 @@ target_sources(cavity_core PRIVATE
   src/exact_plane.cpp
   src/read_poly.cpp
   src/plc_validity.cpp
+  src/protection_point.cpp
   src/edge_protection.cpp
   src/polygon_insertion.cpp
   src/polygon_region.cpp

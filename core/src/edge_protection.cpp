@@ -1,14 +1,12 @@
 #include "cavity/core/edge_protection.h"
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 #include <string>
 
 #include "cavity/core/error.h"
 #include "cavity/core/plc_validity.h"
 #include "cavity/core/triangulate.h"
-#include "exact_plane.h"
 
 namespace cavity::core {
 
@@ -26,49 +24,6 @@ std::vector<std::array<std::uint32_t, 4>> delaunay_of(const Plc& plc) {
                                         " coincide"));
     }
     return std::move(dt.tets);
-}
-
-/// The parameters t = k / 2^j (k odd, 1 <= j <= kLevels) in (0, 1), nearest the middle first.
-/// On a segment whose direction has no common odd factor, these are the only parameters whose
-/// points can have dyadic (a fortiori double) coordinates.
-std::vector<std::pair<std::uint32_t, int>> dyadic_parameters() {
-    constexpr int kLevels = 10;
-    std::vector<std::pair<std::uint32_t, int>> out;
-    for (int j = 1; j <= kLevels; ++j) {
-        for (std::uint32_t k = 1; k < (1u << j); k += 2) {
-            out.emplace_back(k, j);
-        }
-    }
-    const auto distance = [](const std::pair<std::uint32_t, int>& t) {
-        return std::abs(std::ldexp(static_cast<double>(t.first), -t.second) - 0.5);
-    };
-    std::stable_sort(out.begin(), out.end(), [&](const auto& x, const auto& y) {
-        return distance(x) < distance(y);
-    });
-    return out;
-}
-
-/// The first point a + t(b - a), t from `parameters`, whose three coordinates are doubles exactly.
-std::optional<Point3> split_point(const Point3& a,
-                                  const Point3& b,
-                                  const std::vector<std::pair<std::uint32_t, int>>& parameters) {
-    const ExactPoint ea = exact_point(a);
-    const ExactPoint d{Rational(b.x) - ea[0], Rational(b.y) - ea[1], Rational(b.z) - ea[2]};
-    for (const auto& [k, j] : parameters) {
-        const Rational t(Rational(k) / Rational(std::ldexp(1.0, j)));
-        std::array<double, 3> c{};
-        bool exact = true;
-        for (std::size_t i = 0; i < 3 && exact; ++i) {
-            const Rational v = ea[i] + t * d[i];
-            // mpq_get_d truncates, so a representable value converts to itself and no other does.
-            c[i] = v.convert_to<double>();
-            exact = Rational(c[i]) == v;
-        }
-        if (exact) {
-            return Point3{c[0], c[1], c[2]};
-        }
-    }
-    return std::nullopt;
 }
 
 void split_edge(Plc& plc, const Edge& e, std::uint32_t m) {
@@ -121,7 +76,6 @@ std::vector<Edge> unprotected_edges(const Plc& plc) {
 
 Protection protect_edges(Plc& plc, std::size_t max_points) {
     Protection result;
-    const auto parameters = dyadic_parameters();
     const auto base = static_cast<std::uint32_t>(plc.points.index_base);
     for (;;) {
         ++result.rounds;
@@ -145,13 +99,13 @@ Protection protect_edges(Plc& plc, std::size_t max_points) {
                                                 std::to_string(max_points) + " points (" + name +
                                                 ")"));
             }
-            const auto m = split_point(a, b, parameters);
+            const auto m = protection_point(a, b);
             if (!m) {
                 throw Error(located_message(
                     plc.source, std::nullopt,
-                    name + " needs a split, but no point a + t(b - a) with t = k/2^j, j <= 10, "
-                           "has coordinates that are exactly doubles (move its endpoints to "
-                           "coordinates with fewer significant bits)"));
+                    name + " needs a split, but no point strictly inside it has coordinates that "
+                           "are doubles exactly (snap its endpoints to a binary grid, e.g. "
+                           "multiples of 2^-20, to make them)"));
             }
             const auto id = static_cast<std::uint32_t>(plc.points.size());
             plc.points.points.push_back(*m);

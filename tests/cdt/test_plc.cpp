@@ -255,5 +255,239 @@ TEST(PlcValidity, CrossingEdgesStopProtection) {
     }
 }
 
+// --- TetGen's hole rule -------------------------------------------------------------------------
+
+/// Squares centred at (2,2) in the plane z = 0 with half-widths 2, 1 and 0.5 (corners 0-3, 4-7,
+/// 8-11), as loops of one facet.
+struct NestedSquares {
+    Plc plc;
+    PlcFacet facet;
+    ExactPlane plane;
+
+    NestedSquares() : plane(*ExactPlane::of_facet(square_plc(), square_facet())) {
+        plc = square_plc();
+        facet = square_facet();
+    }
+    static Plc square_plc() {
+        Plc p;
+        for (double h : {2.0, 1.0, 0.5}) {
+            for (const auto& [x, y] : std::vector<std::pair<double, double>>{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+                p.points.points.push_back({2 + h * x, 2 + h * y, 0});
+            }
+        }
+        return p;
+    }
+    static PlcFacet square_facet() {
+        PlcFacet f;
+        f.loops = {{0, 1, 2, 3}, {4, 5, 6, 7}, {8, 9, 10, 11}};
+        return f;
+    }
+    bool in(double x, double y) const { return in_facet_region(plc, facet, plane, exact_point({x, y, 0})); }
+    Rational area2() const { return facet_region_area2(plc, facet, plane); }
+};
+
+TEST(HoleRule, NestedLoopWithoutAHolePointSubdividesTheRegion) {
+    const NestedSquares s;
+    EXPECT_TRUE(s.in(0.5, 0.5));
+    EXPECT_TRUE(s.in(1.2, 2));  // between the middle and the inner square: even-odd says outside
+    EXPECT_TRUE(s.in(2, 2));
+    EXPECT_FALSE(s.in(5, 5));
+    EXPECT_EQ(s.area2(), Rational(2 * 16));
+}
+
+TEST(HoleRule, HolePointRemovesOnlyItsFace) {
+    NestedSquares s;
+    s.facet.holes = {{1.2, 1.2, 0}};  // between the middle and the inner square
+    EXPECT_TRUE(s.in(0.5, 0.5));
+    EXPECT_FALSE(s.in(1.2, 2));
+    EXPECT_TRUE(s.in(2, 2));  // the inner square is an island in the hole
+    EXPECT_EQ(s.area2(), Rational(2 * (16 - 4 + 1)));
+    s.facet.holes = {{2, 2, 0}};  // in the inner square
+    EXPECT_TRUE(s.in(1.2, 2));
+    EXPECT_FALSE(s.in(2, 2));
+    EXPECT_EQ(s.area2(), Rational(2 * (16 - 1)));
+    s.facet.holes = {{1.2, 1.2, 0}, {2, 2, 0}};
+    EXPECT_FALSE(s.in(2, 2));
+    EXPECT_EQ(s.area2(), Rational(2 * (16 - 4)));
+    s.facet.holes = {{7, 7, 0}};  // outside every loop: removes nothing
+    EXPECT_EQ(s.area2(), Rational(2 * 16));
+}
+
+TEST(HoleRule, LoopsSharingSides) {
+    NestedSquares s;
+    // A triangle on the bottom side of the outer square, with a hole point in it.
+    s.plc.points.points.push_back({2, 1.5, 0});
+    s.facet.loops = {{0, 1, 2, 3}, {0, 1, 12}};
+    s.facet.holes = {{2, 1, 0}};
+    EXPECT_FALSE(s.in(2, 0.5));
+    EXPECT_TRUE(s.in(2, 3));
+    EXPECT_EQ(s.area2(), Rational(2 * 16 - 4 * 1.5));
+    // Two squares side by side: the union.
+    s.plc.points.points.push_back({6, 0, 0});
+    s.plc.points.points.push_back({6, 4, 0});
+    s.facet.loops = {{0, 1, 2, 3}, {1, 13, 14, 2}};
+    s.facet.holes.clear();
+    EXPECT_TRUE(s.in(5, 1));
+    EXPECT_EQ(s.area2(), Rational(2 * 24));
+}
+
+/// Twice the area of the CDT's polygon triangles whose centroids are inside [1,3]^2.
+double inner_face_area2(const Cdt& cdt) {
+    double area = 0;
+    for (const auto& f : cdt.faces) {
+        const auto& p = cdt.plc.points.points;
+        const Point3& a = p[f.v[0]];
+        const Point3& b = p[f.v[1]];
+        const Point3& c = p[f.v[2]];
+        const double cx = (a.x + b.x + c.x) / 3;
+        const double cy = (a.y + b.y + c.y) / 3;
+        if (a.z == 2 && b.z == 2 && c.z == 2 && cx > 1 && cx < 3 && cy > 1 && cy < 3) {
+            area += std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+        }
+    }
+    return area;
+}
+
+TEST(HoleRule, CdtOfANestedLoopWithAndWithoutAHolePoint) {
+    Plc plc = cube_with_square();  // the square [0.5,3.5]^2 at z = 2, corners 8-11
+    for (const auto& [x, y] : std::vector<std::pair<double, double>>{{1, 1}, {3, 1}, {3, 3}, {1, 3}}) {
+        plc.points.points.push_back({x, y, 2});
+    }
+    plc.facets.back().loops.push_back({12, 13, 14, 15});
+    const Cdt filled = build_cdt(plc, CdtOptions{true});
+    EXPECT_TRUE(validate_cdt(filled.plc, filled.tets).ok());
+    EXPECT_EQ(inner_face_area2(filled), 8.0);  // the nested square is part of the polygon
+    plc.facets.back().holes.push_back({2, 2, 2});
+    const Cdt holed = build_cdt(plc, CdtOptions{true});
+    EXPECT_TRUE(validate_cdt(holed.plc, holed.tets).ok());
+    EXPECT_EQ(inner_face_area2(holed), 0.0);
+    EXPECT_LT(holed.faces.size(), filled.faces.size());
+}
+
+// --- Protection points ---------------------------------------------------------------------------
+
+/// A coordinate with three decimals in [0, 10), as a .poly file would give it.
+double decimal(Random& random) { return static_cast<double>(random.below(10000)) / 1000; }
+
+bool strictly_inside(const Point3& a, const Point3& b, const Point3& p) {
+    const ExactPoint ea = exact_point(a);
+    const ExactPoint eb = exact_point(b);
+    const ExactPoint ep = exact_point(p);
+    std::array<Rational, 3> d{};
+    std::array<Rational, 3> w{};
+    for (std::size_t k = 0; k < 3; ++k) {
+        d[k] = eb[k] - ea[k];
+        w[k] = ep[k] - ea[k];
+    }
+    const bool collinear = w[1] * d[2] == w[2] * d[1] && w[2] * d[0] == w[0] * d[2] &&
+                           w[0] * d[1] == w[1] * d[0];
+    const Rational s = w[0] * d[0] + w[1] * d[1] + w[2] * d[2];
+    return collinear && s > 0 && s < d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+}
+
+bool midpoint_exact(const Point3& a, const Point3& b) {
+    const Point3 m{0.5 * a.x + 0.5 * b.x, 0.5 * a.y + 0.5 * b.y, 0.5 * a.z + 0.5 * b.z};
+    const ExactPoint ea = exact_point(a);
+    const ExactPoint eb = exact_point(b);
+    const ExactPoint em = exact_point(m);
+    return 2 * em[0] == ea[0] + eb[0] && 2 * em[1] == ea[1] + eb[1] && 2 * em[2] == ea[2] + eb[2];
+}
+
+/// Prints how often a protection point exists on random edges with decimal coordinates: general
+/// edges, edges in an axis-parallel plane (one coordinate shared), axis-parallel edges (two shared).
+TEST(ProtectionPoint, SuccessOnDecimalEdges) {
+    constexpr int kEdges = 2000;
+    Random random(2024);
+    for (int shared = 0; shared <= 2; ++shared) {
+        int found = 0;
+        int midpoints = 0;
+        int tested = 0;
+        for (int i = 0; i < kEdges; ++i) {
+            const Point3 a{decimal(random), decimal(random), decimal(random)};
+            Point3 b{decimal(random), decimal(random), decimal(random)};
+            if (shared >= 1) {
+                b.z = a.z;
+            }
+            if (shared >= 2) {
+                b.y = a.y;
+            }
+            if (a.x == b.x && a.y == b.y && a.z == b.z) {
+                continue;
+            }
+            ++tested;
+            const auto p = protection_point(a, b);
+            if (p) {
+                ++found;
+                ASSERT_TRUE(strictly_inside(a, b, *p));
+            }
+            midpoints += midpoint_exact(a, b) ? 1 : 0;
+            // The midpoint is the first candidate.
+            if (midpoint_exact(a, b)) {
+                ASSERT_TRUE(p && 2 * p->x == a.x + b.x);
+            }
+        }
+        std::printf("edges with %d shared coordinate(s): protection point %d/%d (%.1f%%), exact "
+                    "midpoint %d/%d (%.1f%%)\n",
+                    shared, found, tested, 100.0 * found / tested, midpoints, tested,
+                    100.0 * midpoints / tested);
+        EXPECT_GT(found, midpoints);
+    }
+}
+
+/// A box with decimal corners, 30 decimal interior points, two axis-aligned rectangles with decimal
+/// corners (corners 38-41, 42-45), and, when `triangle`, a triangle with decimal corners below them
+/// (46-48).
+Plc decimal_plc(std::uint64_t seed, bool triangle) {
+    Random random(seed);
+    std::vector<Point3> pts{{0.1, 0.2, 0.3}, {9.7, 0.2, 0.3}, {9.7, 9.9, 0.3}, {0.1, 9.9, 0.3},
+                            {0.1, 0.2, 9.1}, {9.7, 0.2, 9.1}, {9.7, 9.9, 9.1}, {0.1, 9.9, 9.1}};
+    for (int i = 0; i < 30; ++i) {
+        pts.push_back({1 + decimal(random) * 0.8, 1 + decimal(random) * 0.8, 1 + decimal(random) * 0.8});
+    }
+    const std::vector<Point3> rectangles{{1.3, 1.1, 2.7}, {8.6, 1.1, 2.7}, {8.6, 7.9, 2.7}, {1.3, 7.9, 2.7},
+                                         {2.1, 1.7, 3.4}, {2.1, 8.3, 3.4}, {2.1, 8.3, 8.8}, {2.1, 1.7, 8.8}};
+    pts.insert(pts.end(), rectangles.begin(), rectangles.end());
+    auto facets = cube_sides();
+    facets.push_back({{38, 39, 40, 41}});
+    facets.push_back({{42, 43, 44, 45}});
+    if (triangle) {
+        for (int i = 0; i < 3; ++i) {  // below the rectangles
+            pts.push_back({1 + decimal(random) * 0.8, 1 + decimal(random) * 0.8, 0.5 + decimal(random) * 0.2});
+        }
+        facets.push_back({{46, 47, 48}});
+    }
+    return make_plc(pts, facets);
+}
+
+TEST(ProtectionPoint, AxisAlignedDecimalPlcsGetValidCdts) {
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+        const Plc plc = decimal_plc(seed, false);
+        ASSERT_FALSE(unprotected_edges(plc).empty()) << "seed " << seed;
+        const Cdt cdt = build_cdt(plc, CdtOptions{true});
+        EXPECT_FALSE(cdt.protection.inserted.empty());
+        EXPECT_TRUE(validate_cdt(cdt.plc, cdt.tets).ok()) << "seed " << seed;
+    }
+}
+
+/// Prints how many decimal PLCs with a general triangle (sides in no axis plane) get a CDT; the
+/// others are refused with a message naming the edge.
+TEST(ProtectionPoint, DecimalPlcsWithAGeneralTriangle) {
+    constexpr int kPlcs = 20;
+    int built = 0;
+    for (std::uint64_t seed = 1; seed <= kPlcs; ++seed) {
+        const Plc plc = decimal_plc(seed, true);
+        try {
+            const Cdt cdt = build_cdt(plc, CdtOptions{true});
+            EXPECT_TRUE(validate_cdt(cdt.plc, cdt.tets).ok()) << "seed " << seed;
+            ++built;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("needs a split, but no point strictly inside it"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+    std::printf("decimal PLCs with a general triangle: %d/%d got a CDT\n", built, kPlcs);
+}
+
 }  // namespace
 }  // namespace cavity::core
