@@ -1,9 +1,11 @@
 #include "cavity/core/cdt.h"
 
+#include <algorithm>
 #include <numeric>
 #include <string>
 
 #include "cavity/core/cdt_validate.h"
+#include "cavity/core/cdt_vertex_insertion.h"
 #include "cavity/core/complex_from_tets.h"
 #include "cavity/core/error.h"
 #include "cavity/core/triangulate.h"
@@ -24,16 +26,12 @@ std::string edge_list(const Plc& plc, const std::vector<Edge>& edges) {
     return s;
 }
 
-}  // namespace
-
-Cdt build_cdt(Plc plc, const CdtOptions& options) {
-    Cdt cdt;
-    if (options.protect) {
-        cdt.protection = protect_edges(plc, options.max_protection_points);
-    }
+/// The Delaunay triangulation of the PLC's points, refused when two coincide or a PLC edge is
+/// missing from it (the flip-based construction needs edge protection).
+std::vector<std::array<std::uint32_t, 4>> protected_delaunay(const Plc& plc) {
     std::vector<std::uint32_t> sequence(plc.points.size());
     std::iota(sequence.begin(), sequence.end(), 0u);
-    const Triangulation dt = triangulate(plc.points, sequence, TriangulateOptions{});
+    Triangulation dt = triangulate(plc.points, sequence, TriangulateOptions{});
     if (!dt.duplicates.empty()) {
         const auto& d = dt.duplicates.front();
         throw Error(located_message(plc.source, std::nullopt,
@@ -49,26 +47,61 @@ Cdt build_cdt(Plc plc, const CdtOptions& options) {
                 " edge(s) are not Delaunay edges of its vertices:" + edge_list(plc, missing) +
                 " (the flip-based CDT needs edge protection; --protect splits them)"));
     }
-    ArrayStorage storage = complex_from_tets(dt.tets);
-    const Geometry geometry = geometry_by_index(plc.points);
+    return std::move(dt.tets);
+}
+
+}  // namespace
+
+LiveCdt::LiveCdt(Plc plc, const CdtOptions& options)
+    : protection_(options.protect ? protect_edges(plc, options.max_protection_points) : Protection{})
+    , plc_(std::move(plc))
+    , geometry_(geometry_by_index(plc_.points)) {
+    storage_ = complex_from_tets(protected_delaunay(plc_));
     ConstrainedFaces constrained;
-    for (std::size_t f = 0; f < plc.facets.size(); ++f) {
-        for (const auto& g : insert_polygon(storage, geometry, plc, f, constrained, cdt.counters)) {
-            cdt.faces.push_back({{g[0], g[1], g[2]}, plc.facets[f].marker});
+    for (std::size_t f = 0; f < plc_.facets.size(); ++f) {
+        for (const auto& g : insert_polygon(storage_, geometry_, plc_, f, constrained, polygon_counters_)) {
+            add_face(g, static_cast<std::uint32_t>(f));
         }
     }
-    cdt.tets = solid_tets(storage);
-    const CdtValidation check = validate_cdt(plc, cdt.tets);
-    if (!check.ok()) {
-        std::string message = "internal error: the constructed mesh is not a CDT (" +
-                              std::to_string(check.problem_count) + " problem(s)):";
-        for (const auto& p : check.problems) {
-            message += "\n  " + p;
-        }
-        throw Error(located_message(plc.source, std::nullopt, message));
+    for (const auto& e : plc_edges(plc_)) {
+        plc_edges_.insert(e);
     }
-    cdt.plc = std::move(plc);
+    validate();
+}
+
+std::vector<std::array<std::uint32_t, 4>> LiveCdt::tets() const { return solid_tets(storage_); }
+
+void LiveCdt::validate() const {
+    const CdtValidation check = validate_cdt(plc_, tets());
+    const std::vector<std::string> complex = check_complex(storage_, geometry_);
+    if (check.ok() && complex.empty()) {
+        return;
+    }
+    std::string message = "internal error: the constructed mesh is not a CDT (" +
+                           std::to_string(check.problem_count + complex.size()) + " problem(s)):";
+    for (const auto& p : check.problems) {
+        message += "\n  " + p;
+    }
+    for (std::size_t i = 0; i < complex.size() && i < 20; ++i) {
+        message += "\n  " + complex[i];
+    }
+    throw Error(located_message(plc_.source, std::nullopt, message));
+}
+
+Cdt LiveCdt::snapshot() const {
+    Cdt cdt;
+    cdt.plc = plc_;
+    cdt.tets = tets();
+    cdt.faces = faces_;
+    cdt.protection = protection_;
+    cdt.counters = polygon_counters_;
+    cdt.inserted = inserted_;
+    cdt.insertion = counters_;
     return cdt;
+}
+
+Cdt build_cdt(Plc plc, const CdtOptions& options) {
+    return LiveCdt(std::move(plc), options).snapshot();
 }
 
 }  // namespace cavity::core

@@ -11,7 +11,7 @@
 /// The constrained Delaunay tetrahedralization of a PLC (Cheng, Dey & Shewchuk §5.8): the Delaunay
 /// triangulation of its vertices, then each polygon inserted by flips. The result is checked by the
 /// independent validator (cdt_validate.h) before it is returned, so a caller never sees an invalid
-/// mesh.
+/// mesh. To keep inserting vertices into it (§5.7), use LiveCdt (cdt_vertex_insertion.h).
 namespace cavity::core {
 
 struct CdtOptions {
@@ -24,12 +24,34 @@ struct CdtFace {
     int marker = 0;
 };
 
+/// Work of CDT vertex insertion (§5.7), for the experiments: every attempt, and what it cost.
+struct CdtInsertionCounters {
+    std::uint64_t attempts = 0;
+    std::uint64_t inserted = 0;
+    std::uint64_t duplicates = 0;               ///< points equal to a vertex (not inserted)
+    std::uint64_t refused_not_star_shaped = 0;  ///< diagnosis 1: a new tetrahedron not positive
+    std::uint64_t refused_through_cavity = 0;   ///< diagnosis 2: a polygon, edge or vertex inside
+    std::uint64_t refused_not_delaunay = 0;     ///< a new face not locally Delaunay (no CDT)
+    std::uint64_t walk_steps = 0;               ///< tetrahedra visited by point location
+    std::uint64_t conflict_tests = 0;           ///< perturbed insphere / ghost tests of the search
+    std::uint64_t tets_deleted = 0;             ///< solid, by accepted insertions
+    std::uint64_t tets_created = 0;
+    std::uint64_t ghosts_deleted = 0;
+    std::uint64_t ghosts_created = 0;
+    std::uint64_t on_polygon = 0;               ///< accepted points in a polygon's closure
+    std::uint64_t on_plc_edge = 0;              ///< accepted points splitting a PLC edge
+    std::uint64_t polygon_triangles_split = 0;  ///< constrained triangles replaced
+};
+
 struct Cdt {
-    Plc plc;  ///< the input, with the protecting points appended (indices from plc.points.size())
+    Plc plc;  ///< the input, with the protecting points appended (indices from plc.points.size()),
+              ///< then the inserted vertices, its edges split where they lie on them
     std::vector<std::array<std::uint32_t, 4>> tets;  ///< 0-based, positively oriented
     std::vector<CdtFace> faces;                      ///< the polygons' triangles, with markers
     Protection protection;
     PolygonInsertionCounters counters;
+    std::vector<std::uint32_t> inserted;  ///< indices of the vertices inserted after the polygons
+    CdtInsertionCounters insertion;
 };
 
 /// \throws Error when the PLC is not edge-protected and options.protect is off (naming the

@@ -33,6 +33,14 @@ public:
 
     std::size_t size() const { return points_.size(); }
 
+    /// Appends an unweighted point whose key is its new index (for geometries by index, like a
+    /// live CDT receiving a vertex). Returns its vertex id.
+    VertexId append_point(const Point3& p) {
+        points_.push_back(p);
+        keys_.push_back(static_cast<std::uint32_t>(keys_.size()));
+        return static_cast<VertexId>(points_.size() - 1);
+    }
+
     WeightedPoint3 weighted_point(VertexId v) const {
         const Point3& p = points_[v];
         return {p.x, p.y, p.z, weights_[v]};
