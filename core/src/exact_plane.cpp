@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "cavity/predicates/orient3d.h"
+
 namespace cavity::core {
 
 namespace {
@@ -169,6 +171,8 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
                 cross(minus(b, a), minus(exact_point(plc.points.points[corners[j]]), a));
             if (!is_zero(n)) {
                 ExactPlane plane;
+                plane.corners_ = {plc.points.points[corners[0]], plc.points.points[corners[i]],
+                                  plc.points.points[corners[j]]};
                 plane.a_ = a;
                 plane.n_ = n;
                 for (int k = 0; k < 3; ++k) {
@@ -187,8 +191,11 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
 Rational ExactPlane::offset(const Point3& p) const { return dot(n_, minus(exact_point(p), a_)); }
 
 predicates::Sign ExactPlane::side(const Point3& p) const {
-    const Rational d = offset(p);
-    return d > 0 ? predicates::Sign::kPos : d < 0 ? predicates::Sign::kNeg : predicates::Sign::kZero;
+    // orient3d(a, b, c, p) is positive when p is on the side opposite (b - a) x (c - a).
+    const predicates::Sign s = predicates::orient3d(corners_[0], corners_[1], corners_[2], p);
+    return s == predicates::Sign::kPos   ? predicates::Sign::kNeg
+           : s == predicates::Sign::kNeg ? predicates::Sign::kPos
+                                         : predicates::Sign::kZero;
 }
 
 ExactPoint ExactPlane::crossing(const Point3& p, const Point3& q) const {

@@ -33,6 +33,7 @@ public:
     /// n . (p - a): positive on the side n points to. Proportional to the signed distance, without
     /// radicals (the chapter's advice for d(v, h) in §5.8).
     Rational offset(const Point3& p) const;
+    /// The sign of offset(p), by the exact orient3d predicate (no rational arithmetic).
     predicates::Sign side(const Point3& p) const;
     /// The point where segment pq meets the plane (p and q strictly on opposite sides).
     ExactPoint crossing(const Point3& p, const Point3& q) const;
@@ -41,6 +42,7 @@ public:
     int dropped_axis() const { return drop_; }
 
 private:
+    std::array<Point3, 3> corners_;  ///< the three corners that define the plane
     ExactPoint a_;
     ExactPoint n_;
     int drop_ = 2;

@@ -28,6 +28,14 @@ struct Box {
             hi[k] = std::max(hi[k], c[k]);
         }
     }
+    bool contains(const Box& other) const {
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (other.lo[k] < lo[k] || hi[k] < other.hi[k]) {
+                return false;
+            }
+        }
+        return true;
+    }
     /// Closed boxes: touching counts, since a corner on a facet's boundary matters.
     bool meets(const Box& other) const {
         for (std::size_t k = 0; k < 3; ++k) {
@@ -399,16 +407,19 @@ std::vector<std::string> plc_violations(const Plc& plc,
                 // An edge lying in the region is legal (a slit, or the foot of a wall: the edge is a
                 // cell, and the CDT has it as an edge among the polygon's triangles), unless it is a
                 // side of a coplanar facet, whose region then overlaps this one.
+                const auto g = std::find_if(e.owners.begin(), e.owners.end(), [&](std::size_t o) {
+                    return coplanar(plc, plc.facets[o], *plane);
+                });
+                // An edge in the region is inside the facet's box: a cheap, exact filter.
+                if (g == e.owners.end() || !box.contains(edge_boxes[i])) {
+                    continue;
+                }
                 const ExactPoint a = exact_point(p);
                 const ExactPoint b = exact_point(q);
                 const ExactPoint mid{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-                for (std::size_t g : e.owners) {
-                    if (coplanar(plc, plc.facets[g], *plane) &&
-                        in_facet_region(plc, facet, *plane, mid)) {
-                        report.add(edge_name(plc, e.edge) + ", a side of " + facet_name(plc, g) +
-                                   ", lies inside it: the two coplanar facets overlap");
-                        break;
-                    }
+                if (in_facet_region(plc, facet, *plane, mid)) {
+                    report.add(edge_name(plc, e.edge) + ", a side of " + facet_name(plc, *g) +
+                               ", lies inside it: the two coplanar facets overlap");
                 }
             } else if (sp * sq < 0 &&
                        in_facet_region(plc, facet, *plane, plane->crossing(p, q))) {

@@ -255,6 +255,57 @@ TEST(PlcValidity, CrossingEdgesStopProtection) {
     }
 }
 
+TEST(PlcValidity, PreconditionIsChecked) {
+    Plc plc = make_plc(cube_points(), cube_sides());
+    plc.points.points.push_back({2, 2, 2.25});  // in the diametral ball of the diagonal 1-7
+    plc.segments.push_back({0, 6});
+    ASSERT_FALSE(unprotected_edges(plc).empty());
+    const auto found = plc_violations(plc, delaunay(plc));
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_NE(found[0].find("cannot check the PLC: 1 edge(s) are not Delaunay edges of its points "
+                            "(protect them first): 0-6"),
+              std::string::npos)
+        << found[0];
+}
+
+/// The unit squares of a 12 x 12 x 12 grid of cubes: 5616 facets; a segment through one square
+/// is the only violation. Bounding boxes keep the exact tests to the few edges near each square.
+TEST(PlcValidity, GridOfCubes) {
+    constexpr std::uint32_t n = 12;
+    std::vector<Point3> pts;
+    const auto id = [&](std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+        return (i * (n + 1) + j) * (n + 1) + k;
+    };
+    for (std::uint32_t i = 0; i <= n; ++i) {
+        for (std::uint32_t j = 0; j <= n; ++j) {
+            for (std::uint32_t k = 0; k <= n; ++k) {
+                pts.push_back({static_cast<double>(i), static_cast<double>(j), static_cast<double>(k)});
+            }
+        }
+    }
+    std::vector<Loops> facets;
+    for (std::uint32_t i = 0; i <= n; ++i) {
+        for (std::uint32_t j = 0; j < n; ++j) {
+            for (std::uint32_t k = 0; k < n; ++k) {
+                facets.push_back({{id(i, j, k), id(i, j + 1, k), id(i, j + 1, k + 1), id(i, j, k + 1)}});
+                facets.push_back({{id(j, i, k), id(j + 1, i, k), id(j + 1, i, k + 1), id(j, i, k + 1)}});
+                facets.push_back({{id(j, k, i), id(j + 1, k, i), id(j + 1, k + 1, i), id(j, k + 1, i)}});
+            }
+        }
+    }
+    Plc plc = make_plc(pts, facets);
+    ASSERT_EQ(plc.facets.size(), 3u * n * n * (n + 1));
+    const auto a = static_cast<std::uint32_t>(plc.points.size());
+    plc.points.points.push_back({5.5, 6.5, 7.5});
+    plc.points.points.push_back({5.5, 6.5, 8.5});
+    auto tets = delaunay(plc);
+    EXPECT_TRUE(plc_violations(plc, tets).empty());
+    plc.segments.push_back({a, a + 1});
+    const auto found = plc_violations(plc, tets);
+    ASSERT_EQ(found.size(), 1u) << joined(found);
+    EXPECT_NE(found[0].find("edge 2197-2198 (a segment) crosses it"), std::string::npos) << found[0];
+}
+
 // --- TetGen's hole rule -------------------------------------------------------------------------
 
 /// Squares centred at (2,2) in the plane z = 0 with half-widths 2, 1 and 0.5 (corners 0-3, 4-7,
@@ -487,6 +538,93 @@ TEST(ProtectionPoint, DecimalPlcsWithAGeneralTriangle) {
         }
     }
     std::printf("decimal PLCs with a general triangle: %d/%d got a CDT\n", built, kPlcs);
+}
+
+TEST(ExactPlaneSide, AgreesWithTheRationalOffset) {
+    const Plc plc = decimal_plc(3, true);
+    for (const PlcFacet& facet : plc.facets) {
+        const ExactPlane plane = *ExactPlane::of_facet(plc, facet);
+        for (const Point3& p : plc.points.points) {
+            const Rational d = plane.offset(p);
+            const int expected = d > 0 ? 1 : d < 0 ? -1 : 0;
+            EXPECT_EQ(static_cast<int>(plane.side(p)), expected);
+        }
+    }
+}
+
+// --- Ids in messages, numbered as the file numbers them -------------------------------------------
+
+std::filesystem::path write_temp(const std::string& name, const std::string& text) {
+    const auto path = std::filesystem::temp_directory_path() / ("cavity_plc_" + name);
+    std::ofstream(path) << text;
+    return path;
+}
+
+/// The cube with the middle square (facet 7, header on line 30) and a segment through the square
+/// (points 13 and 14, in facet 8), numbered from 1.
+const char* const kOneBasedPoly =
+    "# points\n"
+    "14 3 0 0\n"
+    "1 0 0 0\n2 4 0 0\n3 4 4 0\n4 0 4 0\n5 0 0 4\n6 4 0 4\n7 4 4 4\n8 0 4 4\n"
+    "9 0.5 0.5 2\n10 3.5 0.5 2\n11 3.5 3.5 2\n12 0.5 3.5 2\n"
+    "13 1.5 2 1\n14 2 1.5 3\n"
+    "8\n"
+    "1\n4 1 2 3 4\n1\n4 5 6 7 8\n1\n4 1 2 6 5\n"
+    "1\n4 2 3 7 6\n1\n4 3 4 8 7\n1\n4 4 1 5 8\n"
+    "1\n4 9 10 11 12\n"
+    "1\n2 13 14\n"
+    "0\n";
+
+TEST(Messages, PlcViolationsNameFileLineAndFileIds) {
+    const auto path = write_temp("one_based.poly", kOneBasedPoly);
+    Plc plc = read_poly(path);
+    ASSERT_EQ(plc.points.index_base, 1);
+    const auto found = violations(plc);
+    ASSERT_EQ(found.size(), 1u) << joined(found);
+    EXPECT_NE(found[0].find(path.string() + ":30: facet 7: edge 13-14 (a segment) crosses it"), std::string::npos) << found[0];
+    ASSERT_TRUE(unprotected_edges(plc).empty());  // so violations() inserted no point
+    try {
+        require_valid_plc(plc, delaunay(plc));
+        FAIL() << "accepted a segment through a polygon";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("not a piecewise linear complex (1 violation(s)):\n  " +
+                                             found[0]),
+                  std::string::npos)
+            << e.what();
+    }
+    std::filesystem::remove(path);
+}
+
+TEST(Messages, ValidatorNamesFileIds) {
+    const auto path = write_temp("one_based_valid.poly", kOneBasedPoly);
+    Plc plc = read_poly(path);
+    plc.segments.clear();
+    // The Delaunay triangulation crosses the square: named with the file's ids and facet number.
+    auto tets = delaunay(plc);
+    const CdtValidation crossing = validate_cdt(plc, tets);
+    ASSERT_FALSE(crossing.ok());
+    EXPECT_TRUE(mentions(crossing.problems, "crosses facet 7 (line 30)")) << joined(crossing.problems);
+    // A tetrahedron turned inside out: the complex check names it by the file's ids too.
+    const auto t = tets.front();
+    std::swap(tets.front()[0], tets.front()[1]);
+    const CdtValidation inverted = validate_cdt(plc, tets);
+    const std::string name = "(" + std::to_string(t[1] + 1) + " " + std::to_string(t[0] + 1) + " " +
+                             std::to_string(t[2] + 1) + " " + std::to_string(t[3] + 1) + ")";
+    EXPECT_TRUE(mentions(inverted.problems, name + " is not positively oriented"))
+        << name << "\n" << joined(inverted.problems);
+    // An edge needing protection, named by the file's ids.
+    Plc needs = read_poly(path);
+    needs.points.points[12] = {1, 1, 1};
+    needs.points.points[13] = {3, 3, 3};
+    needs.segments = {{12, 13}, {0, 6}};  // file ids 13-14 and 1-7: the diagonal holds 13 and 14
+    try {
+        protect_edges(needs, 100);
+        FAIL() << "protected a diagonal through two points";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("point 13 lies inside edge 1-7"), std::string::npos)
+            << e.what();
+    }
+    std::filesystem::remove(path);
 }
 
 }  // namespace
