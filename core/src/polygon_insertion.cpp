@@ -290,11 +290,17 @@ private:
             storage_.end_operation();
             in_region_.insert(created.begin(), created.end());
             created_.insert(created_.end(), created.begin(), created.end());
+            // Every facet of the new tetrahedra, each once. A facet inside a 2-3 or 3-2 flip
+            // joins two tetrahedra on the flip's five vertices, whose lifted images are
+            // cohyperplanar only now, so it can never turn reflex; but a 4-4 flip joins six
+            // vertices, and two of its four inner facets (those missing an end of the old edge)
+            // belong to five points that may become cohyperplanar later.
             for (TetId t : created) {
                 for (int f = 0; f < 4; ++f) {
                     const HalfFacet h = storage_.adjacent(t, f);
                     if (h != kNoHalfFacet &&
-                        std::find(created.begin(), created.end(), tet_of(h)) == created.end()) {
+                        (tet_of(h) > t ||
+                         std::find(created.begin(), created.end(), tet_of(h)) == created.end())) {
                         certify(t, f);
                     }
                 }

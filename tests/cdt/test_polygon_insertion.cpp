@@ -295,6 +295,43 @@ TEST(PolygonInsertion, FourFourFlips) {
     }
 }
 
+/// A cube with a square across its middle, among points of a coarse grid (spacing 1/2 or 1/4):
+/// full of coplanar sextuples, so the insertions perform many 4-4 flips. A 4-4 flip's inner
+/// facets must be certified like the outer ones: without that, a quarter to a half of these PLCs
+/// ended stuck on held-back flips or with facets that are not locally Delaunay.
+TEST(PolygonInsertion, CoarseGridCubes) {
+    std::uint64_t four_four = 0;
+    for (const auto& [spacing, count] : {std::pair{2, 40}, std::pair{2, 80}, std::pair{4, 100}}) {
+        for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+            std::vector<Point3> pts{{0, 0, 0},       {4, 0, 0},       {4, 4, 0},
+                                    {0, 4, 0},       {0, 0, 4},       {4, 0, 4},
+                                    {4, 4, 4},       {0, 4, 4},       {0, 0, 2.03125},
+                                    {4, 0, 2.03125}, {4, 4, 2.03125}, {0, 4, 2.03125}};
+            Random random(seed);
+            std::set<std::array<std::uint64_t, 3>> used;
+            const auto cells = static_cast<std::uint64_t>(4 * spacing - 1);
+            while (pts.size() < 12 + static_cast<std::size_t>(count)) {
+                const std::array<std::uint64_t, 3> c{1 + random.below(cells),
+                                                     1 + random.below(cells),
+                                                     1 + random.below(cells)};
+                if (used.insert(c).second) {
+                    pts.push_back({static_cast<double>(c[0]) / spacing,
+                                   static_cast<double>(c[1]) / spacing,
+                                   static_cast<double>(c[2]) / spacing});
+                }
+            }
+            const Plc plc = make_plc(pts, {{{0, 1, 2, 3}}, {{4, 5, 6, 7}}, {{8, 9, 10, 11}}});
+            const Cdt cdt = build_cdt(plc, CdtOptions{true});
+            const CdtValidation v = validate_cdt(cdt.plc, cdt.tets);
+            EXPECT_TRUE(v.ok()) << "spacing 1/" << spacing << ", " << count << " points, seed "
+                                << seed << ": " << (v.problems.empty() ? "" : v.problems.front());
+            expect_proposition_5_5(cdt.counters);
+            four_four += cdt.counters.flips.flip_count(FlipKind::k44);
+        }
+    }
+    EXPECT_GT(four_four, 0u);
+}
+
 /// Random integer-grid PLCs as above (a grid point on a polygon side is skipped, since the PLC
 /// would be invalid): R equals the scan and Proposition 5.5 holds for every polygon.
 TEST(PolygonInsertion, RandomGridPlcs) {
