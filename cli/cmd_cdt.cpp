@@ -4,9 +4,12 @@
 
 #include "cavity/core/atomic_file.h"
 #include "cavity/core/cdt.h"
+#include "cavity/core/cdt_vertex_insertion.h"
 #include "cavity/core/error.h"
 #include "cavity/core/mesh_io.h"
 #include "cavity/core/plc.h"
+#include "cavity/core/point_io.h"
+#include "cavity/core/write_poly.h"
 #include "commands.h"
 
 namespace cavity::cli {
@@ -16,14 +19,14 @@ namespace {
 struct CdtArgs {
     std::string input;
     std::string prefix;
+    std::string insert;
     bool protect = false;
+    bool all_or_nothing = false;
     bool quiet = false;
 };
 
 /// PREFIX.face: the polygons' triangles, numbered like the points, with the facet markers.
-void write_faces(const std::string& prefix, const core::Cdt& cdt) {
-    core::AtomicFileGroup group;
-    auto& out = group.add(prefix + ".face");
+void write_faces(core::AtomicFileGroup::Writer& out, const core::Cdt& cdt) {
     const auto base = static_cast<std::uint32_t>(cdt.plc.points.index_base);
     out.write(std::to_string(cdt.faces.size()) + " 1\n");
     for (std::size_t i = 0; i < cdt.faces.size(); ++i) {
@@ -32,15 +35,65 @@ void write_faces(const std::string& prefix, const core::Cdt& cdt) {
                   std::to_string(f.v[1] + base) + " " + std::to_string(f.v[2] + base) + " " +
                   std::to_string(f.marker) + "\n");
     }
-    group.commit();
+}
+
+/// Inserts the points of `file` in order. A refused point (or a duplicate) is reported on stderr
+/// by its number in the file, or, with --all-or-nothing, stops the run before anything is written.
+void insert_points(core::LiveCdt& live, const CdtArgs& args) {
+    const core::PointSet points = core::read_points(args.insert, false);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const auto& p = points.points[i];
+        const core::CdtInsertion r = live.insert_vertex(p);
+        if (r.inserted()) {
+            continue;
+        }
+        char where[160];
+        std::snprintf(where, sizeof where, "point %zu (%.17g %.17g %.17g): ",
+                      i + static_cast<std::size_t>(points.index_base), p.x, p.y, p.z);
+        const std::string message = core::located_message(args.insert, std::nullopt, where + r.message);
+        if (args.all_or_nothing) {
+            throw core::Error(message + " (--all-or-nothing: nothing written)");
+        }
+        std::fprintf(stderr, "cavity: %s\n", message.c_str());
+    }
+    // The constructor checked the CDT of the PLC; check again what the insertions made of it.
+    live.validate();
+}
+
+void print_insertions(const core::Cdt& cdt, const CdtArgs& args) {
+    const auto& c = cdt.insertion;
+    std::printf("inserted %llu of %llu points from %s (%llu refused: %llu not star-shaped, %llu "
+                "through the cavity, %llu not Delaunay; %llu duplicates)\n",
+                static_cast<unsigned long long>(c.inserted),
+                static_cast<unsigned long long>(c.attempts), args.insert.c_str(),
+                static_cast<unsigned long long>(c.attempts - c.inserted),
+                static_cast<unsigned long long>(c.refused_not_star_shaped),
+                static_cast<unsigned long long>(c.refused_through_cavity),
+                static_cast<unsigned long long>(c.refused_not_delaunay),
+                static_cast<unsigned long long>(c.duplicates));
+    std::printf("insertion: %llu on polygons, %llu on PLC edges; tetrahedra deleted %llu, created "
+                "%llu; conflict tests %llu, walk steps %llu\n",
+                static_cast<unsigned long long>(c.on_polygon),
+                static_cast<unsigned long long>(c.on_plc_edge),
+                static_cast<unsigned long long>(c.tets_deleted),
+                static_cast<unsigned long long>(c.tets_created),
+                static_cast<unsigned long long>(c.conflict_tests),
+                static_cast<unsigned long long>(c.walk_steps));
 }
 
 void run_cdt(const CdtArgs& args) {
     core::Plc plc = core::read_poly(args.input);
-    const core::Cdt cdt = core::build_cdt(std::move(plc), core::CdtOptions{args.protect});
-    core::write_tetgen(args.prefix, cdt.plc.points, cdt.tets);
-    write_faces(args.prefix, cdt);
-    core::write_vtu(args.prefix, cdt.plc.points, cdt.tets);
+    core::LiveCdt live(std::move(plc), core::CdtOptions{args.protect});
+    if (!args.insert.empty()) {
+        insert_points(live, args);
+    }
+    const core::Cdt cdt = live.snapshot();
+    core::AtomicFileGroup group;
+    core::write_tetgen(group, args.prefix, cdt.plc.points, cdt.tets);
+    write_faces(group.add(args.prefix + ".face"), cdt);
+    core::write_vtu(group, args.prefix, cdt.plc.points, cdt.tets);
+    core::write_poly(group.add(args.prefix + ".poly"), cdt.plc);
+    group.commit();
     if (args.quiet) {
         return;
     }
@@ -64,7 +117,11 @@ void run_cdt(const CdtArgs& args) {
                 static_cast<unsigned long long>(c.events_held),
                 static_cast<unsigned long long>(c.region_tets),
                 static_cast<unsigned long long>(c.max_region_vertices));
-    std::printf("valid: constrained Delaunay (checked exactly); wrote %s.node, .ele, .face, .vtu\n",
+    if (!args.insert.empty()) {
+        print_insertions(cdt, args);
+    }
+    std::printf("valid: constrained Delaunay (checked exactly); wrote %s.node, .ele, .face, .vtu, "
+                ".poly\n",
                 args.prefix.c_str());
 }
 
@@ -77,12 +134,20 @@ void add_cdt_command(CLI::App& app) {
         "Constrained Delaunay tetrahedralization of a TetGen .poly PLC: Delaunay triangulation of "
         "its vertices, then flip-based polygon insertion (§5.8); the PLC must be edge-protected");
     cmd->add_option("input", args->input, "the PLC (.poly)")->required();
-    cmd->add_option("-o,--output", args->prefix, "output prefix: PREFIX.node .ele .face .vtu")
+    cmd->add_option("-o,--output", args->prefix,
+                    "output prefix: PREFIX.node .ele .face .vtu, and PREFIX.poly, the PLC the mesh "
+                    "conforms to (with protecting and inserted vertices) for `cavity check --poly`")
         ->required();
     cmd->add_flag("--protect", args->protect,
                   "split PLC edges that are not Delaunay (at exact midpoints) until it is "
                   "edge-protected");
-    cmd->add_flag("--quiet", args->quiet, "print nothing on success");
+    cmd->add_option("--insert", args->insert,
+                    "after the polygons, insert these points (.node, .xyz, .ply) in file order "
+                    "(§5.7); a point that cannot be inserted (or repeats a vertex) is reported on "
+                    "stderr by its number in the file and left out, and the exit status stays 0");
+    cmd->add_flag("--all-or-nothing", args->all_or_nothing,
+                  "with --insert: any point left out is an error (exit status 1, nothing written)");
+    cmd->add_flag("--quiet", args->quiet, "print nothing on success (refusals still go to stderr)");
     cmd->callback([args] { run_cdt(*args); });
 }
 

@@ -18,6 +18,7 @@ target_sources(cavity_core PRIVATE
   src/cdt_validate.cpp
   src/cdt.cpp
   src/cdt_vertex_insertion.cpp
+  src/write_poly.cpp
 )
 # Exact event times and facet geometry of polygon insertion.
 target_link_libraries(cavity_core PRIVATE cavity::gmp Boost::headers)

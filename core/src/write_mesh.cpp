@@ -110,25 +110,39 @@ void write_vtu_body(AtomicFileGroup::Writer& out,
 
 }  // namespace
 
-void write_tetgen(const std::filesystem::path& prefix,
+void write_tetgen(AtomicFileGroup& group,
+                  const std::filesystem::path& prefix,
                   const PointSet& points,
                   std::span<const Tet> tets) {
     const auto node = with_suffix(prefix, ".node");
     const auto ele = with_suffix(prefix, ".ele");
     check_tets(ele, points, tets);
-    AtomicFileGroup group;
     write_node(group.add(node), points);
     write_ele(group.add(ele), points, tets);
+}
+
+void write_tetgen(const std::filesystem::path& prefix,
+                  const PointSet& points,
+                  std::span<const Tet> tets) {
+    AtomicFileGroup group;
+    write_tetgen(group, prefix, points, tets);
     group.commit();
+}
+
+void write_vtu(AtomicFileGroup& group,
+               const std::filesystem::path& prefix,
+               const PointSet& points,
+               std::span<const Tet> tets) {
+    const auto vtu = with_suffix(prefix, ".vtu");
+    check_tets(vtu, points, tets);
+    write_vtu_body(group.add(vtu), points, tets);
 }
 
 void write_vtu(const std::filesystem::path& prefix,
                const PointSet& points,
                std::span<const Tet> tets) {
-    const auto vtu = with_suffix(prefix, ".vtu");
-    check_tets(vtu, points, tets);
     AtomicFileGroup group;
-    write_vtu_body(group.add(vtu), points, tets);
+    write_vtu(group, prefix, points, tets);
     group.commit();
 }
 

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "cavity/core/atomic_file.h"
 #include "cavity/core/point_set.h"
 
 namespace cavity::core {
@@ -22,9 +23,21 @@ void write_tetgen(const std::filesystem::path& prefix,
                   const PointSet& points,
                   std::span<const Tet> tets);
 
+/// The same, adding both files to `group` (committed by the caller with its other files).
+void write_tetgen(AtomicFileGroup& group,
+                  const std::filesystem::path& prefix,
+                  const PointSet& points,
+                  std::span<const Tet> tets);
+
 /// Writes PREFIX.vtu: a VTK XML UnstructuredGrid (ASCII, Float64 points, cell type 10 =
 /// VTK_TETRA) for ParaView, with the weights as point data when weighted. Atomic as above.
 void write_vtu(const std::filesystem::path& prefix,
+               const PointSet& points,
+               std::span<const Tet> tets);
+
+/// The same, adding the file to `group` (committed by the caller with its other files).
+void write_vtu(AtomicFileGroup& group,
+               const std::filesystem::path& prefix,
                const PointSet& points,
                std::span<const Tet> tets);
 
