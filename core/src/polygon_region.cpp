@@ -12,13 +12,10 @@ namespace cavity::core {
 
 namespace {
 
-/// A live tetrahedron with vertices u and v, found by a walk through the star of u from
-/// Adjacent2Vertex(u) (each step counted), or kNoTet when uv is not an edge of the complex.
-TetId tet_with_edge(const ArrayStorage& storage, VertexId u, VertexId v, std::uint64_t& steps) {
-    const TetId start = storage.tet_at_vertex(u);
-    if (start == kNoTet) {
-        return kNoTet;
-    }
+/// A live tetrahedron with vertices u and v found by a search across the facets of u's star from
+/// `start` (each tetrahedron counted), or kNoTet when uv is not an edge of the complex.
+TetId search_star(const ArrayStorage& storage, TetId start, VertexId u, VertexId v,
+                  std::uint64_t& steps) {
     std::vector<TetId> queue{start};
     std::unordered_set<TetId> seen{start};
     for (std::size_t k = 0; k < queue.size(); ++k) {
@@ -39,6 +36,50 @@ TetId tet_with_edge(const ArrayStorage& storage, VertexId u, VertexId v, std::ui
         }
     }
     return kNoTet;
+}
+
+/// A live tetrahedron with edge uv, or kNoTet when uv is not an edge of the complex. Walks from
+/// Adjacent2Vertex(u) through the solid tetrahedra of u's star toward v: from tetrahedron t, it
+/// crosses a facet through u that has v strictly beyond it. When no facet does, the ray from u to
+/// v lies in t's closed cone at u, and since uv is an edge of the complex (no edge passes through
+/// a face or another vertex), v is a vertex of t. A walk that would revisit a tetrahedron or enter
+/// a ghost falls back to a search of the whole star. Steps are counted.
+TetId tet_with_edge(const ArrayStorage& storage, const Geometry& geometry, VertexId u,
+                    VertexId v, std::uint64_t& steps) {
+    const TetId start = storage.tet_at_vertex(u);
+    if (start == kNoTet) {
+        return kNoTet;
+    }
+    std::unordered_set<TetId> seen;
+    TetId t = start;
+    if (is_ghost(storage.vertices(t))) {
+        // The solid tetrahedron behind the ghost's hull triangle also has u.
+        const HalfFacet behind = storage.adjacent(t, 3);
+        t = behind == kNoHalfFacet ? t : tet_of(behind);
+    }
+    while (!is_ghost(storage.vertices(t)) && seen.insert(t).second) {
+        ++steps;
+        const TetVertices& w = storage.vertices(t);
+        if (slot_of(w, v) >= 0) {
+            return t;
+        }
+        TetId next = kNoTet;
+        for (int f = 0; f < 4 && next == kNoTet; ++f) {
+            if (w[static_cast<std::size_t>(f)] == u) {
+                continue;
+            }
+            const auto g = facet_vertices(w, f);
+            if (geometry.orient3d(g[0], g[1], g[2], v, nullptr) == predicates::Sign::kNeg) {
+                const HalfFacet h = storage.adjacent(t, f);
+                next = h == kNoHalfFacet ? kNoTet : tet_of(h);
+            }
+        }
+        if (next == kNoTet) {
+            break;
+        }
+        t = next;
+    }
+    return search_star(storage, start, u, v, steps);
 }
 
 }  // namespace
@@ -160,7 +201,7 @@ PolygonRegion find_polygon_region(const ArrayStorage& storage, FacetGeometry& fa
     const Plc& plc = facet.plc();
     for (const auto& [u, v] : facet.loop_sides()) {
         // Step 1: the rotary search around the side.
-        const TetId start = tet_with_edge(storage, u, v, region.rotary_steps);
+        const TetId start = tet_with_edge(storage, facet.geometry(), u, v, region.rotary_steps);
         if (start == kNoTet) {
             const auto base = static_cast<VertexId>(plc.points.index_base);
             throw Error(located_message(

@@ -31,6 +31,7 @@ class FacetGeometry {
 public:
     FacetGeometry(const Geometry& geometry, const Plc& plc, const PlcFacet& facet);
 
+    const Geometry& geometry() const { return geometry_; }
     const Plc& plc() const { return plc_; }
     const PlcFacet& facet() const { return facet_; }
 
@@ -90,7 +91,7 @@ struct PolygonRegion {
 };
 
 /// Steps 1-2. For every loop side (an edge of the complex), a walk through the star of one end
-/// finds a tetrahedron holding the side, and the rotary search around the side tests its ring for
+/// toward the other finds a tetrahedron holding the side, and the rotary search around the side tests its ring for
 /// tetrahedra touching the polygon; a depth-first search across facets from each one found then
 /// tests the neighbours of every touching tetrahedron. The touching tetrahedra of each connected
 /// piece of the polygon are facet-connected (around any point of the piece they form the star of

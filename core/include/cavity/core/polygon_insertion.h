@@ -30,7 +30,8 @@ struct PolygonWork {
     std::uint64_t region_vertices = 0;    ///< m
     std::uint64_t region_tets = 0;        ///< |R| when the polygon is inserted
     /// Tetrahedra stepped through by step 1: for each loop side, the walk through the star of one
-    /// end to a tetrahedron holding the side, then the ring of tetrahedra around the side.
+    /// end toward the other to a tetrahedron holding the side, then the ring of tetrahedra around
+    /// the side.
     std::uint64_t rotary_steps = 0;
     /// Tetrahedra first tested by step 2's depth-first search (the neighbours of the tetrahedra
     /// that touch the polygon); with the rings of step 1, every tetrahedron steps 1-2 look at.
