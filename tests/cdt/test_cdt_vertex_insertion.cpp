@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <string>
@@ -16,6 +17,7 @@
 #include "cavity/core/complex_from_tets.h"
 #include "cavity/core/error.h"
 #include "cavity/core/random.h"
+#include "cavity/core/write_poly.h"
 
 namespace cavity::core {
 namespace {
@@ -425,6 +427,49 @@ TEST(CdtVertexInsertion, RefusedNotDelaunay) {
     Plc augmented = live.plc();
     augmented.points.points.push_back(p);
     EXPECT_THROW(build_cdt(augmented, CdtOptions{false}), Error);
+}
+
+/// PREFIX.poly is what `cavity check --poly` reads: written after insertions that split a loop
+/// side and a segment, it must read back to the same PLC.
+TEST(CdtVertexInsertion, WrittenPlcReadsBack) {
+    auto plc = cube_with_middle_square();
+    plc.points.index_base = 1;
+    const auto a = static_cast<std::uint32_t>(plc.points.size());
+    plc.points.points.push_back({1, 1, 0.5});
+    plc.points.points.push_back({1.375, 1.375, 0.6875});
+    plc.segments.push_back({a, a + 1});
+    plc.facets[0].holes.push_back({2, 2, 0});
+    plc.volume_holes.push_back({-1, -1, -1});
+    LiveCdt live(std::move(plc), CdtOptions{true});
+    ASSERT_TRUE(live.insert_vertex({1.125, 1.125, 0.5625}).inserted());
+    ASSERT_TRUE(live.insert_vertex({4, 1.75, 2.03125}).inserted());
+    ASSERT_TRUE(live.insert_vertex({0.1, 0.2, 0.3}).inserted());
+    const auto path = std::filesystem::temp_directory_path() / "cavity_cdtvi_roundtrip.poly";
+    {
+        AtomicFileGroup group;
+        write_poly(group.add(path), live.plc());
+        group.commit();
+    }
+    const Plc back = read_poly(path);
+    std::filesystem::remove(path);
+    const Plc& plc0 = live.plc();
+    EXPECT_EQ(back.points.index_base, 1);
+    ASSERT_EQ(back.points.size(), plc0.points.size());
+    for (std::size_t i = 0; i < plc0.points.size(); ++i) {
+        EXPECT_EQ(back.points.points[i].x, plc0.points.points[i].x);
+        EXPECT_EQ(back.points.points[i].y, plc0.points.points[i].y);
+        EXPECT_EQ(back.points.points[i].z, plc0.points.points[i].z);
+    }
+    EXPECT_EQ(back.segments, plc0.segments);
+    ASSERT_EQ(back.facets.size(), plc0.facets.size());
+    for (std::size_t f = 0; f < plc0.facets.size(); ++f) {
+        EXPECT_EQ(back.facets[f].loops, plc0.facets[f].loops);
+        EXPECT_EQ(back.facets[f].marker, plc0.facets[f].marker);
+        EXPECT_EQ(back.facets[f].holes.size(), plc0.facets[f].holes.size());
+    }
+    EXPECT_EQ(back.volume_holes.size(), 1u);
+    EXPECT_EQ(plc_edges(back), plc_edges(plc0));
+    EXPECT_TRUE(validate_cdt(back, live.tets()).ok());
 }
 
 }  // namespace
