@@ -314,6 +314,211 @@ def plot_peers(inp, out, md):
     md.append("")
 
 
+FAMILY_COLORS = {"hull-faces": "C0", "nested-boxes": "C1", "terrain": "C2", "voxel-grid": "C3"}
+
+
+def plot_giftwrap(inp, out, md):
+    rows = read(os.path.join(inp, "giftwrap.csv"))
+    if rows is None:
+        return
+    fig, axes = plt.subplots(1, 3, figsize=(16, 4.5))
+    md.append("## giftwrap (§5.6: gift-wrapping O(nh) against Bowyer–Watson)\n")
+    md.append("| dist | n | h | h/n | apex tests/(n h) | insphere/(n h) | gift-wrap s | Bowyer–Watson s | "
+              "time ratio | BW predicates/n | predicate ratio GW/BW | same_tets |")
+    md.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for (dist,), rs in sorted(group(rows, "dist").items()):
+        rs = sorted(rs, key=lambda r: int(r["points"]))
+        ns = [int(r["points"]) for r in rs]
+        nh = [n * num(r, "tets") for n, r in zip(ns, rs)]
+        apex = [num(r, "apex_orient_tests") for r in rs]
+        gw = [num(r, "gw_s") for r in rs]
+        bw = [num(r, "bw_s") for r in rs]
+        axes[0].loglog(nh, apex, "o-", ms=3, label=f"{dist} apex orient3d (slope {slope(nh, apex):.3f})")
+        axes[0].loglog(nh, [num(r, "gw_insphere_calls") for r in rs], "s--", ms=3,
+                       label=f"{dist} insphere")
+        axes[1].loglog(ns, gw, "o-", ms=3, label=f"{dist} gift-wrap (slope {slope(ns, gw):.2f})")
+        axes[1].loglog(ns, bw, "s--", ms=3, label=f"{dist} Bowyer–Watson (slope {slope(ns, bw):.2f})")
+        axes[2].semilogx(ns, [num(r, "gw_over_bw_predicates") for r in rs], "o-", ms=3, label=dist)
+        for r in rs:
+            md.append(f"| {dist} | {r['points']} | {r['tets']} | {num(r, 'tets') / num(r, 'points'):.2f} | "
+                      f"{num(r, 'apex_per_nh'):.3f} | {num(r, 'insphere_per_nh'):.3f} | {num(r, 'gw_s'):.3g} | "
+                      f"{num(r, 'bw_s'):.3g} | {num(r, 'gw_over_bw_time'):.0f} | "
+                      f"{num(r, 'bw_predicates_per_point'):.1f} | {num(r, 'gw_over_bw_predicates'):.0f} | "
+                      f"{r['same_tets']} |")
+        md.append(f"| {dist} | fitted slopes vs n: gift-wrap time {slope(ns, gw):.2f}, Bowyer–Watson time "
+                  f"{slope(ns, bw):.2f}, apex tests {slope(ns, apex):.2f} | | | | | | | | | | |")
+    lo = min(int(r["points"]) * num(r, "tets") for r in rows)
+    hi = max(int(r["points"]) * num(r, "tets") for r in rows)
+    axes[0].loglog([lo, hi], [lo, hi], "k:", lw=1, label="= n h")
+    axes[0].set(xlabel="n h", ylabel="calls", title="gift-wrapping: predicate calls against n h")
+    axes[1].set(xlabel="n", ylabel="seconds", title="time, same points")
+    axes[2].set(xlabel="n", ylabel="ratio", title="predicate calls, gift-wrap / Bowyer–Watson")
+    for ax in axes:
+        ax.legend(fontsize=6)
+        ax.grid(True, which="both", alpha=0.3)
+    save(fig, out, "giftwrap")
+    same = sum(r["same_tets"] == "1" for r in rows)
+    md.append(f"\n- same tetrahedra as Bowyer–Watson in {same} of {len(rows)} runs\n")
+
+
+def plot_deletion(inp, out, md):
+    rows = read(os.path.join(inp, "deletion.csv"))
+    per = read(os.path.join(inp, "deletion.j.csv"))
+    if rows is None or per is None:
+        return
+    fig, axes = plt.subplots(1, 3, figsize=(16, 4.5))
+    md.append("## deletion (§5.6: vertex deletion by gift-wrapping the star)\n")
+    md.append("| dist | n | deletions (hull) | mean degree | apex tests/deletion | insphere/deletion | "
+              "apex/Σd² | created/deletion | µs/deletion | rebuild s | equal_rebuild |")
+    md.append("|---|---|---|---|---|---|---|---|---|---|---|")
+    for (dist,), rs in sorted(group(rows, "dist").items()):
+        by_n = group(rs, "n")
+        ns = sorted(int(n) for (n,) in by_n)
+        for n in ns:
+            b = by_n[(str(n),)]
+
+            def mean(col):
+                return float(np.mean([num(r, col) for r in b]))
+            md.append(f"| {dist} | {b[0]['points']} | {int(sum(num(r, 'deletions') for r in b))} "
+                      f"({int(sum(num(r, 'hull_deletions') for r in b))}) | {mean('mean_degree'):.2f} | "
+                      f"{mean('apex_per_deletion'):.0f} | {mean('insphere_per_deletion'):.0f} | "
+                      f"{mean('apex_per_degree_sq'):.3f} | {mean('created_per_deletion'):.1f} | "
+                      f"{mean('us_per_deletion'):.0f} | {mean('rebuild_s'):.3g} | "
+                      f"{all(r['equal_rebuild'] == '1' for r in b)} |")
+        apex_n = [float(np.mean([num(r, "apex_per_deletion") for r in by_n[(str(n),)]])) for n in ns]
+        axes[2].semilogx(ns, apex_n, "o-", ms=3, label=f"{dist} (slope {slope(ns, apex_n):.2f})")
+    md.append("")
+    md.append("| dist | deletions | degree range | fitted slope of apex tests vs degree | "
+              "apex tests / ((d − 3) · facets wrapped) | facets wrapped / d (d ≤ 10, d ≥ 18) |")
+    md.append("|---|---|---|---|---|---|")
+    for (dist,), rs in sorted(group(per, "dist").items()):
+        rs = [r for r in rs if num(r, "apex_orient_tests") > 0]
+        d = np.array([num(r, "degree") for r in rs])
+        a = np.array([num(r, "apex_orient_tests") for r in rs])
+        f = np.array([num(r, "facets_wrapped") for r in rs])
+        axes[0].loglog(d, a, ".", ms=2, alpha=0.4, label=f"{dist} (slope {slope(d, a):.2f})")
+        axes[1].loglog(d * f, a, ".", ms=2, alpha=0.4, label=dist)
+        identity = a / ((d - 3) * f)
+        small, large = f[d <= 10] / d[d <= 10], f[d >= 18] / d[d >= 18]
+        md.append(f"| {dist} | {len(rs)} | {int(min(d))}–{int(max(d))} | {slope(d, a):.2f} | "
+                  f"{identity.min():.3f}–{identity.max():.3f} | "
+                  f"{small.mean() if len(small) else float('nan'):.2f}, "
+                  f"{large.mean() if len(large) else float('nan'):.2f} |")
+    d = np.array([4, max(num(r, "degree") for r in per)])
+    axes[0].loglog(d, d**2, "k:", lw=1, label="d²")
+    hi = max(num(r, "degree") * num(r, "facets_wrapped") for r in per)
+    axes[1].loglog([4, hi], [4, hi], "k:", lw=1, label="= d · facets")
+    axes[0].set(xlabel="degree d of the deleted vertex", ylabel="apex orient3d tests",
+                title="work per deletion against the degree")
+    axes[1].set(xlabel="d · facets wrapped", ylabel="apex orient3d tests",
+                title="O(n h) inside the cavity: n = d, h ≈ facets")
+    axes[2].set(xlabel="n", ylabel="apex tests per deletion", title="work per deletion against n")
+    for ax in axes:
+        ax.legend(fontsize=6)
+        ax.grid(True, which="both", alpha=0.3)
+    save(fig, out, "deletion")
+    equal = sum(r["equal_rebuild"] == "1" for r in rows)
+    md.append(f"\n- equal to the rebuilt triangulation in {equal} of {len(rows)} runs "
+              f"({int(sum(num(r, 'deletions') for r in rows))} deletions)\n")
+
+
+def summarize_cdt_validity(inp, md):
+    """Every CDT the validator checked, from the cdt and cdtvalid suites."""
+    checked = []
+    for suite in ("cdt", "cdtvalid"):
+        rows = read(os.path.join(inp, f"{suite}.csv")) or []
+        checked += [(suite, r) for r in rows if r["valid"] != "-"]
+    if not checked:
+        return
+    md.append("## cdt validity (independent validator, suites cdt and cdtvalid)\n")
+    md.append("| suite | family | n (input) | seed | vertices | polygons | flips | validate s | valid | problems |")
+    md.append("|---|---|---|---|---|---|---|---|---|---|")
+    for suite, r in checked:
+        md.append(f"| {suite} | {r['dist']} | {r['points']} | {r['seed']} | {r['vertices']} | "
+                  f"{r['polygons']} | {r['flips']} | {num(r, 'validate_s'):.3g} | {r['valid']} | "
+                  f"{r['cdt_problems']} |")
+    bad = [r for _, r in checked if r["valid"] != "1"]
+    md.append(f"\n- validated {len(checked)} CDTs: {len(checked) - len(bad)} valid, {len(bad)} invalid"
+              + "".join(f"; invalid: {r['dist']} n={r['n']} seed={r['seed']} ({r['cdt_problems']} problems)"
+                        for r in bad) + "\n")
+
+
+def plot_cdt(inp, out, md):
+    rows = read(os.path.join(inp, "cdt.csv"))
+    per = read(os.path.join(inp, "cdt.j.csv")) or []
+    if rows is None:
+        return
+    fig, axes = plt.subplots(1, 4, figsize=(20, 4.5))
+    md.append("## cdt (§5.8: polygon insertion by flips, Propositions 5.5–5.6)\n")
+    md.append("| family | n (input) | vertices n | polygons | protection points | flips | flips/n² | "
+              "max flips/m² | polygons with flips ≥ m² | max m | max events/(m² ln m) | events/(n² ln n) | "
+              "DFS visits/|R| | insert s | valid |")
+    md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for (family,), rs in sorted(group(rows, "dist").items()):
+        color = FAMILY_COLORS.get(family)
+        rs = sorted(rs, key=lambda r: (int(r["n"]), int(r["seed"])))
+        n = [num(r, "vertices") for r in rs]
+        flips = [max(num(r, "flips"), 0.5) for r in rs]
+        axes[2].loglog(n, flips, "o", ms=4, color=color, label=f"{family} (slope {slope(n, flips):.2f})")
+        for r in rs:
+            md.append(f"| {family} | {r['points']} | {r['vertices']} | {r['polygons']} | "
+                      f"{r['protection_points']} | {r['flips']} | {num(r, 'flips_per_n2'):.2e} | "
+                      f"{r['max_flips_per_m2']} | {r['polygons_at_or_over_m2']} | {r['max_m']} | "
+                      f"{r['max_events_per_m2_log_m']} | {num(r, 'events_per_n2_log_n'):.2e} | "
+                      f"{num(r, 'search_per_region_tet'):.2f} | {num(r, 'insert_s'):.3g} | {r['valid']} |")
+    lo = min(num(r, "vertices") for r in rows)
+    hi = max(num(r, "vertices") for r in rows)
+    axes[2].loglog([lo, hi], [lo**2, hi**2], "k:", lw=1, label="n² (Prop. 5.6 bound)")
+    for (family,), ps in sorted(group(per, "dist").items()):
+        ps = [p for p in ps if num(p, "m") > 0]
+        if not ps:
+            continue
+        color = FAMILY_COLORS.get(family)
+        m = np.array([num(p, "m") for p in ps])
+        f = np.array([num(p, "flips") for p in ps])
+        e = np.array([num(p, "events_queued") for p in ps])
+        axes[0].loglog(m, np.maximum(f, 0.5), ".", ms=3, alpha=0.5, color=color, label=family)
+        axes[1].loglog(m * m * np.log(np.maximum(m, 2)), np.maximum(e, 0.5), ".", ms=3, alpha=0.5,
+                       color=color, label=family)
+        axes[3].loglog([max(num(p, "region_tets"), 0.5) for p in ps],
+                       [max(num(p, "search_visited"), 0.5) for p in ps], ".", ms=3, alpha=0.5,
+                       color=color, label=family)
+    if per:
+        m = np.array([2, max(num(p, "m") for p in per)])
+        axes[0].loglog(m, m * m, "k:", lw=1, label="m² (Prop. 5.5 bound)")
+        axes[1].loglog(m * m * np.log(m), m * m * np.log(m), "k:", lw=1, label="= m² ln m")
+        md.append("")
+        nonempty = [p for p in per if num(p, "m") > 0]
+        ratio = [num(p, "flips") / num(p, "m") ** 2 for p in nonempty]
+        ev = [num(p, "events_queued") / (num(p, "m") ** 2 * math.log(num(p, "m"))) for p in nonempty
+              if num(p, "m") >= 2]
+        below = sum(p["flips_below_m2"] == "1" for p in per)
+        md.append(f"- polygons inserted: {len(per)}; with a nonempty region R: {len(nonempty)}; "
+                  f"flips < m² on {below} of {len(per)}")
+        if ratio:
+            md.append(f"- flips/m² over polygons with R nonempty: median {np.median(ratio):.3f}, "
+                      f"max {max(ratio):.3f}; events/(m² ln m): median {np.median(ev):.3f}, max {max(ev):.3f}")
+        for (family,), ps in sorted(group(nonempty, "dist").items()):
+            m = [num(p, "m") for p in ps]
+            f = [max(num(p, "flips"), 0.5) for p in ps]
+            md.append(f"- {family}: m up to {int(max(m))}, fitted slope of flips vs m "
+                      f"{slope(m, f):.2f} (flips ≥ 1 only: "
+                      f"{slope([a for a, b in zip(m, f) if b >= 1], [b for b in f if b >= 1]):.2f})")
+    else:
+        md.append("\n- no per-polygon records in cdt.j.csv\n")
+    axes[0].set(xlabel="m (vertices of the region R)", ylabel="flips", title="per polygon: flips against m")
+    axes[1].set(xlabel="m² ln m", ylabel="events queued", title="per polygon: events against m² ln m")
+    axes[2].set(xlabel="n (vertices, after protection)", ylabel="flips, all polygons",
+                title="per PLC: flips against n")
+    axes[3].set(xlabel="|R| (tetrahedra crossing the polygon)", ylabel="tetrahedra visited",
+                title="per polygon: depth-first search against |R|")
+    for ax in axes:
+        ax.legend(fontsize=6)
+        ax.grid(True, which="both", alpha=0.3)
+    save(fig, out, "cdt")
+    md.append("")
+
+
 def main():
     inp, out = sys.argv[1], sys.argv[2]
     os.makedirs(out, exist_ok=True)
@@ -330,6 +535,10 @@ def main():
                       "created / n", True, [(0, "slope 0 (linear total)"), (0.5, "slope 1/2 (n^1.5 total)")])
     summarize_degenerate(inp, md)
     plot_peers(inp, out, md)
+    plot_giftwrap(inp, out, md)
+    plot_deletion(inp, out, md)
+    plot_cdt(inp, out, md)
+    summarize_cdt_validity(inp, md)
     with open(os.path.join(out, "summary.md"), "w") as f:
         f.write("\n".join(md) + "\n")
 

@@ -8,6 +8,7 @@
 #include "cavity/core/triangulate.h"
 #include "cavity/core/validate.h"
 #include "cavity/experiments/measure.h"
+#include "canonical.h"
 #include "format.h"
 
 namespace cavity::experiments::measure {
@@ -34,25 +35,6 @@ std::uint64_t peak_rss_bytes() {
         }
     }
     return 0;
-}
-
-/// FNV-1a over the sorted list of sorted tetrahedra: equal for equal triangulations whatever
-/// the order in which they were built.
-std::uint64_t canonical_hash(std::vector<std::array<std::uint32_t, 4>> tets) {
-    for (auto& t : tets) {
-        std::sort(t.begin(), t.end());
-    }
-    std::sort(tets.begin(), tets.end());
-    std::uint64_t hash = 1469598103934665603ull;
-    for (const auto& t : tets) {
-        for (std::uint32_t v : t) {
-            for (int byte = 0; byte < 4; ++byte) {
-                hash ^= (v >> (8 * byte)) & 0xFFu;
-                hash *= 1099511628211ull;
-            }
-        }
-    }
-    return hash;
 }
 
 constexpr const char* kKindNames[] = {"orient3d", "insphere", "orient4d", "ghost"};
@@ -96,7 +78,7 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
     const double time_s = std::chrono::duration<double>(Clock::now() - start).count();
     const std::uint64_t peak = peak_known ? peak_rss_bytes() : 0;
     std::string valid = "-";
-    if (suite.validate) {
+    if (suite.validates(run.n)) {
         const core::ValidationReport report = core::validate(points, result.tets);
         if (!report.ok()) {
             throw core::Error(run.dist + " n=" + std::to_string(run.n) + " order " + run.order +
@@ -125,7 +107,7 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
     }
     char hash[20];
     std::snprintf(hash, sizeof hash, "%016llx",
-                  static_cast<unsigned long long>(canonical_hash(result.tets)));
+                  static_cast<unsigned long long>(detail::canonical_hash(result.tets)));
     out.values.push_back(number(std::uint64_t{result.storage_bytes}));
     out.values.push_back(number(peak));
     out.values.push_back(valid);

@@ -96,6 +96,10 @@ std::string metadata_json(const Suite& suite,
     field("sizes", list(settings.sizes), false);
     field("seeds", list(settings.seeds), false);
     field("order_seed_offset", "1000", false);
+    if (suite.kind == SuiteKind::kDeletion) {
+        field("deletions", std::to_string(settings.deletions), false);
+        field("deletion_seed_offset", "2000", false);
+    }
     field("shards", std::to_string(shard_count), false);
     field("command", command_line, true);
     field("git_commit", commit.empty() ? "unknown" : commit, true);

@@ -20,7 +20,11 @@ std::vector<RunSpec> enumerate_runs(const Suite& suite, const TierSettings& tier
     const bool triangulates = suite.kind == SuiteKind::kRuns || suite.kind == SuiteKind::kDegenerate ||
                               suite.kind == SuiteKind::kPeers;
     const std::vector<std::string> none{"-"};
-    const auto& orders = suite.kind == SuiteKind::kJTets ? none : suite.orders;
+    // Only insertion-order experiments vary the order: jtets has none, deletion builds with a
+    // BRIO (its result does not depend on the order), cdt inserts the PLC's points in input order.
+    const bool ordered = suite.kind != SuiteKind::kJTets && suite.kind != SuiteKind::kDeletion &&
+                         suite.kind != SuiteKind::kCdt;
+    const auto& orders = ordered ? suite.orders : none;
     const auto& locators = triangulates ? suite.locators : none;
     const auto& storages = triangulates ? suite.storages : none;
     for (const std::string& dist : suite.distributions) {
@@ -50,9 +54,12 @@ double run_cost(const Suite& suite, const TierSettings& tier, const RunSpec& run
         case SuiteKind::kCreation: return n * n * static_cast<double>(tier.orders);
         case SuiteKind::kDegenerate: return n * 10;
         case SuiteKind::kPeers: return n * 3;
+        case SuiteKind::kGiftWrap: return n * n * 0.1;  // O(nh) apex tests
+        case SuiteKind::kDeletion: return n * 3 + static_cast<double>(tier.deletions) * 100;
+        case SuiteKind::kCdt: return n * n * 0.01;  // region scans: O(h) per polygon
         case SuiteKind::kRuns: break;
     }
-    return n * (suite.validate ? 10 : 1);
+    return n * (suite.validates(run.n) ? 10 : 1);
 }
 
 std::vector<std::string> metric_columns(SuiteKind kind) {
@@ -60,6 +67,9 @@ std::vector<std::string> metric_columns(SuiteKind kind) {
         case SuiteKind::kJTets: return measure::jtets_columns();
         case SuiteKind::kCreation: return measure::creation_columns();
         case SuiteKind::kPeers: return measure::peers_columns();
+        case SuiteKind::kGiftWrap: return measure::giftwrap_columns();
+        case SuiteKind::kDeletion: return measure::deletion_columns();
+        case SuiteKind::kCdt: return measure::cdt_columns();
         case SuiteKind::kRuns:
         case SuiteKind::kDegenerate: break;
     }
@@ -70,6 +80,9 @@ std::vector<std::string> j_columns(SuiteKind kind) {
     switch (kind) {
         case SuiteKind::kJTets: return measure::jtets_j_columns();
         case SuiteKind::kCreation: return measure::creation_j_columns();
+        case SuiteKind::kDeletion: return measure::deletion_j_columns();
+        case SuiteKind::kCdt: return measure::cdt_j_columns();
+        case SuiteKind::kGiftWrap:
         case SuiteKind::kPeers:
         case SuiteKind::kRuns:
         case SuiteKind::kDegenerate: break;
@@ -82,6 +95,9 @@ RunOutput execute_run(const Suite& suite, const TierSettings& tier, const RunSpe
         case SuiteKind::kJTets: return measure::jtets(run);
         case SuiteKind::kCreation: return measure::creation(suite, tier, run);
         case SuiteKind::kPeers: return measure::peers(suite, run);
+        case SuiteKind::kGiftWrap: return measure::giftwrap(suite, run);
+        case SuiteKind::kDeletion: return measure::deletion(suite, tier, run);
+        case SuiteKind::kCdt: return measure::cdt(suite, run);
         case SuiteKind::kRuns:
         case SuiteKind::kDegenerate: break;
     }

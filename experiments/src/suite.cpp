@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 #include "cavity/core/generate.h"
 #include "cavity/core/insertion_order.h"
 #include "cavity/core/triangulate.h"
+#include "cavity/experiments/plc_families.h"
 
 namespace cavity::experiments {
 
@@ -93,14 +95,16 @@ private:
 };
 
 SuiteKind parse_kind(const LineReader& reader, const std::string& word) {
-    constexpr SuiteKind kKinds[] = {SuiteKind::kRuns, SuiteKind::kJTets, SuiteKind::kCreation,
-                                    SuiteKind::kDegenerate, SuiteKind::kPeers};
+    constexpr SuiteKind kKinds[] = {SuiteKind::kRuns,     SuiteKind::kJTets,    SuiteKind::kCreation,
+                                    SuiteKind::kDegenerate, SuiteKind::kPeers,  SuiteKind::kGiftWrap,
+                                    SuiteKind::kDeletion, SuiteKind::kCdt};
     for (SuiteKind kind : kKinds) {
         if (word == suite_kind_name(kind)) {
             return kind;
         }
     }
-    reader.fail("unknown kind '" + word + "' (runs, jtets, creation, degenerate or peers)");
+    reader.fail("unknown kind '" + word +
+                "' (runs, jtets, creation, degenerate, peers, giftwrap, deletion or cdt)");
 }
 
 void check_distribution(const std::string& name) {
@@ -110,6 +114,15 @@ void check_distribution(const std::string& name) {
         }
     }
     throw Error("unknown distribution '" + name + "'");
+}
+
+void check_plc_family(const std::string& name) {
+    for (const PlcFamily& f : plc_families()) {
+        if (f.name == name) {
+            return;
+        }
+    }
+    throw Error("unknown PLC family '" + name + "'");
 }
 
 void check_order(const std::string& name) {
@@ -127,6 +140,9 @@ std::string_view suite_kind_name(SuiteKind kind) {
         case SuiteKind::kCreation: return "creation";
         case SuiteKind::kDegenerate: return "degenerate";
         case SuiteKind::kPeers: return "peers";
+        case SuiteKind::kGiftWrap: return "giftwrap";
+        case SuiteKind::kDeletion: return "deletion";
+        case SuiteKind::kCdt: return "cdt";
     }
     return "runs";
 }
@@ -147,6 +163,9 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
     suite.file = file;
     std::set<std::string> seen;
     bool validate_given = false;
+    // Distribution names are checked once the kind is known: cdt suites name PLC families.
+    std::size_t dist_line = 0;
+    std::map<std::string, std::size_t> cap_lines;
     std::size_t line_number = 0;
     std::size_t start = 0;
     while (start <= text.size()) {
@@ -190,7 +209,8 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
         } else if (key == "kind") {
             suite.kind = parse_kind(reader, single());
         } else if (key == "dist") {
-            suite.distributions = reader.names(words, check_distribution);
+            suite.distributions = words;
+            dist_line = line_number;
         } else if (key == "order") {
             suite.orders = reader.names(words, check_order);
         } else if (key == "locate") {
@@ -214,19 +234,24 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
                 reader.fail("orders must be positive");
             }
             (key == "orders.quick" ? suite.quick : suite.full).orders = r;
+        } else if (key == "deletions.quick" || key == "deletions.full") {
+            (key == "deletions.quick" ? suite.quick : suite.full).deletions = reader.integer(single());
         } else if (key == "validate") {
             const std::string& w = single();
-            if (w != "yes" && w != "no") {
-                reader.fail("validate takes yes or no, not '" + w + "'");
+            if (w != "yes" && w != "no" && w.find_first_not_of("0123456789") != std::string::npos) {
+                reader.fail("validate takes yes, no or a number of points, not '" + w + "'");
             }
-            suite.validate = w == "yes";
+            suite.validate = w != "no";
+            if (w != "yes" && w != "no") {
+                suite.validate_max = reader.integer(w);
+            }
             validate_given = true;
         } else if (key == "cap") {
             if (words.size() != 2) {
                 reader.fail("cap takes a distribution and a size");
             }
-            reader.names({words[0]}, check_distribution);
             suite.caps[words[0]] = reader.integer(words[1]);
+            cap_lines[words[0]] = line_number;
         } else {
             reader.fail("unknown key '" + key + "'");
         }
@@ -238,13 +263,18 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
                                         std::string("missing key '") + required + "'"));
         }
     }
+    const auto check_name = suite.kind == SuiteKind::kCdt ? check_plc_family : check_distribution;
+    LineReader(file, dist_line).names(suite.distributions, check_name);
+    for (const auto& [capped, line] : cap_lines) {
+        LineReader(file, line).names({capped}, check_name);
+    }
     for (const TierSettings* t : {&suite.quick, &suite.full}) {
         if (std::find(t->sizes.begin(), t->sizes.end(), 0u) != t->sizes.end()) {
             throw Error(located_message(file, std::nullopt, "a size of 0 points"));
         }
     }
     if (!validate_given) {
-        suite.validate = suite.kind == SuiteKind::kDegenerate;
+        suite.validate = suite.kind == SuiteKind::kDegenerate || suite.kind == SuiteKind::kCdt;
     }
     return suite;
 }

@@ -28,4 +28,24 @@ std::vector<std::string> creation_j_columns();
 RunOutput peers(const Suite& suite, const RunSpec& run);
 std::vector<std::string> peers_columns();
 
+/// §5.6: gift-wrapping against Bowyer-Watson (in the suite's order) on the same points: times,
+/// gift-wrapping's apex orient3d tests and insphere calls against n h, Bowyer-Watson's predicate
+/// calls, and whether the two give the same tetrahedra.
+RunOutput giftwrap(const Suite& suite, const RunSpec& run);
+std::vector<std::string> giftwrap_columns();
+
+/// Vertex deletion by gift-wrapping the star: the tier's number of random vertices deleted one
+/// by one, the work of each against its degree (per-deletion rows), and the result compared with
+/// the triangulation rebuilt without them.
+RunOutput deletion(const Suite& suite, const TierSettings& tier, const RunSpec& run);
+std::vector<std::string> deletion_columns();
+std::vector<std::string> deletion_j_columns();
+
+/// §5.8: the CDT of a generated PLC (plc_families.h), edge-protected first: flips and events
+/// per polygon against m^2 and m^2 log m (Proposition 5.5, per-polygon rows) and over the whole
+/// sequence against n^2 (Proposition 5.6).
+RunOutput cdt(const Suite& suite, const RunSpec& run);
+std::vector<std::string> cdt_columns();
+std::vector<std::string> cdt_j_columns();
+
 }  // namespace cavity::experiments::measure

@@ -12,8 +12,9 @@
 /// Suite files are line based: `key value value ...`, `#` starts a comment, blank lines are
 /// ignored. Keys (each at most once):
 ///   question  TEXT                      what the suite checks (required)
-///   kind      runs|jtets|creation|degenerate|peers   (required)
-///   dist      NAME...                   generate_points distributions (required)
+///   kind      runs|jtets|creation|degenerate|peers|giftwrap|deletion|cdt   (required)
+///   dist      NAME...                   generate_points distributions; for cdt, PLC families
+///                                       (plc_families.h) (required)
 ///   n.quick   N...   n.full N...        sizes per tier (required)
 ///   seeds.quick S... seeds.full S...    point (and order) seeds; `A..B` is a range (required)
 ///   order     NAME...                   input random brio brio-noreverse hilbert zorder
@@ -22,13 +23,16 @@
 ///   storage   array|hash...             (default array)
 ///   brio-ratio R                        (default 0.5)
 ///   orders.quick R  orders.full R       creation: insertion orders per point set (default 100)
-///   validate  yes|no                    check every output exactly (default: yes for degenerate)
+///   deletions.quick K deletions.full K  deletion: vertices deleted per run (default 100; at
+///                                       most half the points)
+///   validate  yes|no|N                  check every output exactly (default: yes for degenerate
+///                                       and cdt); N: only the runs of at most N points
 ///   cap       DIST N                    leave out the sizes above N for DIST (a generator's
 ///                                       limit, e.g. cospherical); may be given once per DIST
 /// Anything else is an Error naming the file and the line.
 namespace cavity::experiments {
 
-enum class SuiteKind { kRuns, kJTets, kCreation, kDegenerate, kPeers };
+enum class SuiteKind { kRuns, kJTets, kCreation, kDegenerate, kPeers, kGiftWrap, kDeletion, kCdt };
 
 std::string_view suite_kind_name(SuiteKind kind);
 
@@ -36,6 +40,7 @@ struct TierSettings {
     std::vector<std::uint64_t> sizes;
     std::vector<std::uint64_t> seeds;
     std::uint64_t orders = 100;
+    std::uint64_t deletions = 100;
 };
 
 struct Suite {
@@ -49,6 +54,9 @@ struct Suite {
     std::vector<std::string> storages{"array"};
     double brio_ratio = 0.5;
     bool validate = false;
+    std::uint64_t validate_max = UINT64_MAX;  ///< `validate N`: larger runs are not checked
+
+    bool validates(std::uint64_t n) const { return validate && n <= validate_max; }
     /// Distribution -> largest size run (the `cap` key); sizes above it are not enumerated.
     std::map<std::string, std::uint64_t> caps;
     TierSettings quick;
