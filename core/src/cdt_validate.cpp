@@ -19,6 +19,7 @@ using Triangle = std::array<std::uint32_t, 3>;
 class Report {
 public:
     explicit Report(CdtValidation& out) : out_(out) {}
+
     void add(std::string what) {
         if (out_.problems.size() < 20) {
             out_.problems.push_back(std::move(what));
@@ -40,9 +41,11 @@ std::string tet_name(const std::array<std::uint32_t, 4>& t, int base) {
 
 /// The facet's triangles among the mesh triangles lying in its plane, after checking that no
 /// tetrahedron crosses it and that they cover its area.
-std::vector<Triangle> polygon_faces(const Plc& plc, std::size_t index,
+std::vector<Triangle> polygon_faces(const Plc& plc,
+                                    std::size_t index,
                                     std::span<const std::array<std::uint32_t, 4>> tets,
-                                    const std::set<Triangle>& triangles, Report& report) {
+                                    const std::set<Triangle>& triangles,
+                                    Report& report) {
     const PlcFacet& facet = plc.facets[index];
     const std::string name = facet_name(plc, index);
     const auto plane = ExactPlane::of_facet(plc, facet);
@@ -60,7 +63,8 @@ std::vector<Triangle> polygon_faces(const Plc& plc, std::size_t index,
         for (std::size_t i = 0; i < 4; ++i) {
             for (std::size_t j = 0; j < 4; ++j) {
                 if (s[i] < 0 && s[j] > 0) {
-                    if (in_facet_region(plc, facet, *plane, plane->crossing(pts[t[i]], pts[t[j]]))) {
+                    if (in_facet_region(
+                            plc, facet, *plane, plane->crossing(pts[t[i]], pts[t[j]]))) {
                         report.add(tet_name(t, plc.points.index_base) + " crosses " + name);
                     }
                     i = j = 4;
@@ -78,8 +82,8 @@ std::vector<Triangle> polygon_faces(const Plc& plc, std::size_t index,
         const ExactPoint a = exact_point(pts[g[0]]);
         const ExactPoint b = exact_point(pts[g[1]]);
         const ExactPoint c = exact_point(pts[g[2]]);
-        const ExactPoint centroid{(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3,
-                                  (a[2] + b[2] + c[2]) / 3};
+        const ExactPoint centroid{
+            (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
         if (in_facet_region(plc, facet, *plane, centroid)) {
             faces.push_back(g);
             covered += triangle_area2(*plane, pts[g[0]], pts[g[1]], pts[g[2]]);
@@ -187,7 +191,11 @@ CdtValidation validate_cdt(const Plc& plc, std::span<const std::array<std::uint3
             const VertexId q = w[static_cast<std::size_t>(facet_of(h))];
             const auto& gm = geometry;
             if (perturbation::insphere_sos(
-                    gm.point(v[0]), gm.point(v[1]), gm.point(v[2]), gm.point(v[3]), gm.point(q),
+                    gm.point(v[0]),
+                    gm.point(v[1]),
+                    gm.point(v[2]),
+                    gm.point(v[3]),
+                    gm.point(q),
                     {gm.key(v[0]), gm.key(v[1]), gm.key(v[2]), gm.key(v[3]), gm.key(q)}) ==
                 Sign::kPos) {
                 report.add("triangle " + std::to_string(g[0]) + " " + std::to_string(g[1]) + " " +

@@ -18,7 +18,8 @@ std::vector<std::array<std::uint32_t, 4>> delaunay_of(const Plc& plc) {
     Triangulation dt = triangulate(plc.points, sequence, TriangulateOptions{});
     if (!dt.duplicates.empty()) {
         const auto& d = dt.duplicates.front();
-        throw Error(located_message(plc.source, std::nullopt,
+        throw Error(located_message(plc.source,
+                                    std::nullopt,
                                     "points " + std::to_string(d[0] + plc.points.index_base) +
                                         " and " + std::to_string(d[1] + plc.points.index_base) +
                                         " coincide"));
@@ -50,7 +51,8 @@ void split_edge(Plc& plc, const Edge& e, std::uint32_t m) {
 
 }  // namespace
 
-std::vector<Edge> unprotected_edges(const Plc& plc, std::span<const std::array<std::uint32_t, 4>> tets) {
+std::vector<Edge> unprotected_edges(const Plc& plc,
+                                    std::span<const std::array<std::uint32_t, 4>> tets) {
     std::vector<Edge> present;
     present.reserve(tets.size() * 6);
     for (const auto& t : tets) {
@@ -94,7 +96,8 @@ Protection protect_edges(Plc& plc, std::size_t max_points) {
             const std::string name =
                 "edge " + std::to_string(e[0] + base) + "-" + std::to_string(e[1] + base);
             if (result.inserted.size() >= max_points) {
-                throw Error(located_message(plc.source, std::nullopt,
+                throw Error(located_message(plc.source,
+                                            std::nullopt,
                                             "still not edge-protected after inserting " +
                                                 std::to_string(max_points) + " points (" + name +
                                                 ")"));
@@ -102,7 +105,8 @@ Protection protect_edges(Plc& plc, std::size_t max_points) {
             const auto m = protection_point(a, b);
             if (!m) {
                 throw Error(located_message(
-                    plc.source, std::nullopt,
+                    plc.source,
+                    std::nullopt,
                     name + " needs a split, but no point strictly inside it has coordinates that "
                            "are doubles exactly (snap its endpoints to a binary grid, e.g. "
                            "multiples of 2^-20, to make them)"));

@@ -21,7 +21,9 @@ Rational dot(const ExactPoint& u, const ExactPoint& v) {
     return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
 }
 
-bool is_zero(const ExactPoint& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+bool is_zero(const ExactPoint& v) {
+    return v[0] == 0 && v[1] == 0 && v[2] == 0;
+}
 
 /// A point of the facet's plane, projected one-to-one by dropping one coordinate.
 struct Point2 {
@@ -51,7 +53,8 @@ Rational orient2(const Point2& p, const Point2& q, const Point2& r) {
 
 /// True when x lies on the closed segment pq.
 bool on_segment(const Point2& p, const Point2& q, const Point2& x) {
-    return orient2(p, q, x) == 0 && (x.u - p.u) * (x.u - q.u) <= 0 && (x.v - p.v) * (x.v - q.v) <= 0;
+    return orient2(p, q, x) == 0 && (x.u - p.u) * (x.u - q.u) <= 0 &&
+           (x.v - p.v) * (x.v - q.v) <= 0;
 }
 
 LoopPosition position(const std::vector<Point2>& loop, const Point2& x) {
@@ -150,7 +153,9 @@ std::vector<std::vector<bool>> nesting(const std::vector<std::vector<Point2>>& l
 
 }  // namespace
 
-ExactPoint exact_point(const Point3& p) { return {Rational(p.x), Rational(p.y), Rational(p.z)}; }
+ExactPoint exact_point(const Point3& p) {
+    return {Rational(p.x), Rational(p.y), Rational(p.z)};
+}
 
 std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& facet) {
     std::vector<std::uint32_t> corners;
@@ -171,7 +176,8 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
                 cross(minus(b, a), minus(exact_point(plc.points.points[corners[j]]), a));
             if (!is_zero(n)) {
                 ExactPlane plane;
-                plane.corners_ = {plc.points.points[corners[0]], plc.points.points[corners[i]],
+                plane.corners_ = {plc.points.points[corners[0]],
+                                  plc.points.points[corners[i]],
                                   plc.points.points[corners[j]]};
                 plane.a_ = a;
                 plane.n_ = n;
@@ -188,7 +194,9 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
     return std::nullopt;
 }
 
-Rational ExactPlane::offset(const Point3& p) const { return dot(n_, minus(exact_point(p), a_)); }
+Rational ExactPlane::offset(const Point3& p) const {
+    return dot(n_, minus(exact_point(p), a_));
+}
 
 predicates::Sign ExactPlane::side(const Point3& p) const {
     // orient3d(a, b, c, p) is positive when p is on the side opposite (b - a) x (c - a).
@@ -241,7 +249,8 @@ Rational facet_region_area2(const Plc& plc, const PlcFacet& facet, const ExactPl
     for (std::size_t i = 0; i < n; ++i) {
         face[i] = contains[i];
         face[i][i] = true;
-        depth[i] = static_cast<std::size_t>(std::count(contains[i].begin(), contains[i].end(), true));
+        depth[i] =
+            static_cast<std::size_t>(std::count(contains[i].begin(), contains[i].end(), true));
     }
     std::vector<std::vector<bool>> holes;
     for (const Point3& h : facet.holes) {
@@ -277,10 +286,14 @@ SidePieces side_pieces(const Plc& plc,
     return pieces(project_loop(plc, a, drop), project_loop(plc, b, drop));
 }
 
-Rational triangle_area2(const ExactPlane& plane, const Point3& a, const Point3& b, const Point3& c) {
+Rational triangle_area2(const ExactPlane& plane,
+                        const Point3& a,
+                        const Point3& b,
+                        const Point3& c) {
     const int drop = plane.dropped_axis();
-    return loop_area2(
-        {project(exact_point(a), drop), project(exact_point(b), drop), project(exact_point(c), drop)});
+    return loop_area2({project(exact_point(a), drop),
+                       project(exact_point(b), drop),
+                       project(exact_point(c), drop)});
 }
 
 }  // namespace cavity::core

@@ -37,6 +37,7 @@ public:
     predicates::Sign side(const Point3& p) const;
     /// The point where segment pq meets the plane (p and q strictly on opposite sides).
     ExactPoint crossing(const Point3& p, const Point3& q) const;
+
     /// The coordinate dropped to project the plane one-to-one onto a coordinate plane: the axis of
     /// the largest normal component.
     int dropped_axis() const { return drop_; }
@@ -52,7 +53,9 @@ private:
 /// TetGen's rule (see PlcFacet): x is inside at least one loop, and no hole point of the facet lies
 /// in the same face of the loops' arrangement, i.e. no hole point is inside exactly the same loops
 /// as x. Exact, in the projection that drops `plane.dropped_axis()`.
-bool in_facet_region(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane,
+bool in_facet_region(const Plc& plc,
+                     const PlcFacet& facet,
+                     const ExactPlane& plane,
                      const ExactPoint& x);
 
 /// Twice the area of the facet's region (the same rule), measured in the projection (exact). With

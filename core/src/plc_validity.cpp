@@ -28,6 +28,7 @@ struct Box {
             hi[k] = std::max(hi[k], c[k]);
         }
     }
+
     bool contains(const Box& other) const {
         for (std::size_t k = 0; k < 3; ++k) {
             if (other.lo[k] < lo[k] || hi[k] < other.hi[k]) {
@@ -36,6 +37,7 @@ struct Box {
         }
         return true;
     }
+
     /// Closed boxes: touching counts, since a corner on a facet's boundary matters.
     bool meets(const Box& other) const {
         for (std::size_t k = 0; k < 3; ++k) {
@@ -67,8 +69,8 @@ public:
         }
         bounds_ = all;
         const auto n = static_cast<double>(edge_boxes.size());
-        resolution_ = std::clamp(static_cast<std::size_t>(std::cbrt(n)), std::size_t{1},
-                                 std::size_t{64});
+        resolution_ =
+            std::clamp(static_cast<std::size_t>(std::cbrt(n)), std::size_t{1}, std::size_t{64});
         cells_.resize(resolution_ * resolution_ * resolution_);
         for (std::size_t e = 0; e < edge_boxes.size(); ++e) {
             const auto [lo, hi] = range(edge_boxes[e]);
@@ -113,6 +115,7 @@ private:
         const double f = std::floor((x - bounds_.lo[k]) / width * static_cast<double>(resolution_));
         return static_cast<std::size_t>(std::clamp(f, 0.0, static_cast<double>(resolution_ - 1)));
     }
+
     std::pair<Index3, Index3> range(const Box& box) const {
         Index3 lo{};
         Index3 hi{};
@@ -122,6 +125,7 @@ private:
         }
         return {lo, hi};
     }
+
     template <class F>
     void for_cells(const Index3& lo, const Index3& hi, F&& f) const {
         for (std::size_t i = lo[0]; i <= hi[0]; ++i) {
@@ -200,9 +204,11 @@ public:
         const auto base = static_cast<std::size_t>(plc.points.index_base);
         label_ = "facet " + std::to_string(facet_.line == 0 ? f + base : facet_.number);
     }
+
     void add(const std::string& what) {
         out_.push_back(located_message(
-            plc_.source, facet_.line == 0 ? std::nullopt : std::optional<std::size_t>(facet_.line),
+            plc_.source,
+            facet_.line == 0 ? std::nullopt : std::optional<std::size_t>(facet_.line),
             label_ + ": " + what));
     }
 
@@ -257,8 +263,9 @@ void check_holes(const Plc& plc, const PlcFacet& facet, int drop, FacetReport& r
         for (std::size_t i = 0; i < facet.loops.size(); ++i) {
             if (loop_position(plc, facet.loops[i], drop, exact_point(facet.holes[h])) ==
                 LoopPosition::kOnBoundary) {
-                report.add("hole point " + std::to_string(h + 1) + " lies on a side of " +
-                           loop_name(plc, facet.loops[i], i));
+                report.add("hole point " +
+                           std::to_string(h + static_cast<std::size_t>(plc.points.index_base)) +
+                           " lies on a side of " + loop_name(plc, facet.loops[i], i));
             }
         }
     }
@@ -276,7 +283,9 @@ Rational dot(const ExactPoint& u, const ExactPoint& v) {
     return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
 }
 
-bool is_zero(const ExactPoint& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+bool is_zero(const ExactPoint& v) {
+    return v[0] == 0 && v[1] == 0 && v[2] == 0;
+}
 
 /// True when p lies on the open segment ab.
 bool inside_segment(const ExactPoint& a, const ExactPoint& b, const ExactPoint& p) {
@@ -291,7 +300,9 @@ bool inside_segment(const ExactPoint& a, const ExactPoint& b, const ExactPoint& 
 
 /// True when segments ab and cd (four distinct points) cross at one point interior to both: they
 /// are coplanar, not collinear, and each separates the other's endpoints strictly in their plane.
-bool segments_cross(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c,
+bool segments_cross(const ExactPoint& a,
+                    const ExactPoint& b,
+                    const ExactPoint& c,
                     const ExactPoint& d) {
     const ExactPoint u = minus(b, a);
     const ExactPoint n = cross(u, minus(d, c));
@@ -329,9 +340,10 @@ std::vector<std::string> edge_violations(const Plc& plc,
         for (std::uint32_t v = 0; v < pts.size(); ++v) {
             if (v != e[0] && v != e[1] && box.meets(box_of(v, v)) &&
                 inside_segment(a, b, exact_point(pts[v]))) {
-                out.push_back(located_message(plc.source, std::nullopt,
-                                              "point " + std::to_string(v + base) +
-                                                  " lies inside edge " + ids(e)));
+                out.push_back(located_message(
+                    plc.source,
+                    std::nullopt,
+                    "point " + std::to_string(v + base) + " lies inside edge " + ids(e)));
             }
         }
         for (const Edge& f : all) {
@@ -340,16 +352,16 @@ std::vector<std::string> edge_violations(const Plc& plc,
                 continue;
             }
             if (segments_cross(a, b, exact_point(pts[f[0]]), exact_point(pts[f[1]]))) {
-                out.push_back(located_message(plc.source, std::nullopt,
-                                              "edges " + ids(e) + " and " + ids(f) + " cross"));
+                out.push_back(located_message(
+                    plc.source, std::nullopt, "edges " + ids(e) + " and " + ids(f) + " cross"));
             }
         }
     }
     return out;
 }
 
-std::vector<std::string> plc_violations(const Plc& plc,
-                                        std::span<const std::array<std::uint32_t, 4>> delaunay_tets) {
+std::vector<std::string> plc_violations(
+    const Plc& plc, std::span<const std::array<std::uint32_t, 4>> delaunay_tets) {
     std::vector<std::string> out;
     const auto base = static_cast<std::uint32_t>(plc.points.index_base);
     const std::vector<Edge> missing = unprotected_edges(plc, delaunay_tets);
@@ -357,7 +369,8 @@ std::vector<std::string> plc_violations(const Plc& plc,
         std::string s = "cannot check the PLC: " + std::to_string(missing.size()) +
                         " edge(s) are not Delaunay edges of its points (protect them first):";
         for (std::size_t i = 0; i < missing.size() && i < 20; ++i) {
-            s += " " + std::to_string(missing[i][0] + base) + "-" + std::to_string(missing[i][1] + base);
+            s += " " + std::to_string(missing[i][0] + base) + "-" +
+                 std::to_string(missing[i][1] + base);
         }
         out.push_back(located_message(plc.source, std::nullopt, s));
         return out;
@@ -394,7 +407,8 @@ std::vector<std::string> plc_violations(const Plc& plc,
         std::sort(near.begin(), near.end());
         for (std::size_t i : near) {
             const OwnedEdge& e = edges[i];
-            if (!edge_boxes[i].meets(box) || std::binary_search(sides.begin(), sides.end(), e.edge)) {
+            if (!edge_boxes[i].meets(box) ||
+                std::binary_search(sides.begin(), sides.end(), e.edge)) {
                 continue;
             }
             const Point3& p = pts[e.edge[0]];
@@ -404,9 +418,9 @@ std::vector<std::string> plc_violations(const Plc& plc,
             // By the precondition the edge meets no side of the facet except at a shared corner,
             // so the point tested below is on no loop side and decides for the whole edge.
             if (sp == 0 && sq == 0) {
-                // An edge lying in the region is legal (a slit, or the foot of a wall: the edge is a
-                // cell, and the CDT has it as an edge among the polygon's triangles), unless it is a
-                // side of a coplanar facet, whose region then overlaps this one.
+                // An edge lying in the region is legal (a slit, or the foot of a wall: the edge is
+                // a cell, and the CDT has it as an edge among the polygon's triangles), unless it
+                // is a side of a coplanar facet, whose region then overlaps this one.
                 const auto g = std::find_if(e.owners.begin(), e.owners.end(), [&](std::size_t o) {
                     return coplanar(plc, plc.facets[o], *plane);
                 });
@@ -421,11 +435,11 @@ std::vector<std::string> plc_violations(const Plc& plc,
                     report.add(edge_name(plc, e.edge) + ", a side of " + facet_name(plc, *g) +
                                ", lies inside it: the two coplanar facets overlap");
                 }
-            } else if (sp * sq < 0 &&
-                       in_facet_region(plc, facet, *plane, plane->crossing(p, q))) {
+            } else if (sp * sq < 0 && in_facet_region(plc, facet, *plane, plane->crossing(p, q))) {
                 report.add(edge_name(plc, e.edge) +
-                           (e.owners.empty() ? " (a segment)"
-                                             : " (a side of " + facet_name(plc, e.owners[0]) + ")") +
+                           (e.owners.empty()
+                                ? " (a segment)"
+                                : " (a side of " + facet_name(plc, e.owners[0]) + ")") +
                            " crosses it");
             }
         }
@@ -448,7 +462,8 @@ void throw_violations(const std::vector<std::string>& problems, const std::strin
 
 }  // namespace
 
-void require_valid_plc(const Plc& plc, std::span<const std::array<std::uint32_t, 4>> delaunay_tets) {
+void require_valid_plc(const Plc& plc,
+                       std::span<const std::array<std::uint32_t, 4>> delaunay_tets) {
     const std::vector<std::string> problems = plc_violations(plc, delaunay_tets);
     if (!problems.empty()) {
         throw_violations(problems, "the input is not a piecewise linear complex");

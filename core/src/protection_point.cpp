@@ -39,11 +39,17 @@ Integer floor_div(const Integer& n, const Integer& d) {
     return q;
 }
 
-Integer floor_of(const Rational& x) { return floor_div(numerator(x), denominator(x)); }
+Integer floor_of(const Rational& x) {
+    return floor_div(numerator(x), denominator(x));
+}
 
-Integer ceil_of(const Rational& x) { return -floor_of(-x); }
+Integer ceil_of(const Rational& x) {
+    return -floor_of(-x);
+}
 
-Integer lcm_of(const Integer& a, const Integer& b) { return a / gcd(a, b) * b; }
+Integer lcm_of(const Integer& a, const Integer& b) {
+    return a / gcd(a, b) * b;
+}
 
 /// The common members of two progressions.
 std::optional<Progression> intersect(const Progression& p, const Progression& q) {
@@ -57,7 +63,10 @@ std::optional<Progression> intersect(const Progression& p, const Progression& q)
     Integer g;
     Integer x;
     Integer y;
-    mpz_gcdext(g.backend().data(), x.backend().data(), y.backend().data(), s1.backend().data(),
+    mpz_gcdext(g.backend().data(),
+               x.backend().data(),
+               y.backend().data(),
+               s1.backend().data(),
                s2.backend().data());
     const Integer diff = o2 - o1;
     if (diff % g != 0) {
@@ -130,8 +139,9 @@ std::optional<Point3> protection_point(const Point3& a, const Point3& b) {
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         pieces[i] = i;
     }
-    std::stable_sort(pieces.begin(), pieces.end(),
-                     [&](std::size_t i, std::size_t j) { return distance(i) < distance(j); });
+    std::stable_sort(pieces.begin(), pieces.end(), [&](std::size_t i, std::size_t j) {
+        return distance(i) < distance(j);
+    });
     for (std::size_t i : pieces) {
         const Rational lo = cuts[i];
         const Rational hi = cuts[i + 1];
@@ -145,8 +155,8 @@ std::optional<Point3> protection_point(const Point3& a, const Point3& b) {
             const Rational ea(pa[c]);
             const Rational d = Rational(pb[c]) - ea;
             const int q = spacing_exponent(ea + mid * d);
-            const Rational spacing = q >= 0 ? Rational(Integer(1) << q)
-                                            : Rational(Integer(1), Integer(1) << -q);
+            const Rational spacing =
+                q >= 0 ? Rational(Integer(1) << q) : Rational(Integer(1), Integer(1) << -q);
             const Progression own{-ea / d, spacing / abs(d)};
             t = first ? std::optional<Progression>(own) : intersect(*t, own);
             first = false;

@@ -23,6 +23,7 @@ public:
         }
         return split_whitespace(lines_.text());
     }
+
     bool more() {
         if (!lines_.next()) {
             return false;
@@ -30,6 +31,7 @@ public:
         pending_ = true;
         return true;
     }
+
     std::vector<std::string_view> next_or_pending(const std::string& what) {
         if (pending_) {
             pending_ = false;
@@ -37,15 +39,19 @@ public:
         }
         return next(what);
     }
+
     std::size_t line() const { return lines_.number(); }
+
     const TextSource& source() const { return source_; }
 
     std::uint64_t count(std::string_view token, std::string_view what) const {
         return source_.count(token, line(), what);
     }
+
     double number(std::string_view token, std::string_view what) const {
         return source_.number(token, line(), what);
     }
+
     [[noreturn]] void fail(const std::string& what) const { source_.fail(line(), what); }
 
 private:
@@ -82,8 +88,8 @@ void read_points_part(PolyParser& in, Plc& plc, const std::filesystem::path& fil
     }
     plc.points.source = plc.source;
     for (std::uint64_t i = 0; i < count; ++i) {
-        const auto tokens = in.next(std::to_string(count) + " points (found " + std::to_string(i) +
-                                    ")");
+        const auto tokens =
+            in.next(std::to_string(count) + " points (found " + std::to_string(i) + ")");
         if (tokens.size() != 4 + attributes + markers) {
             in.fail("expected " + std::to_string(4 + attributes + markers) + " fields, found " +
                     std::to_string(tokens.size()));
@@ -98,8 +104,8 @@ void read_points_part(PolyParser& in, Plc& plc, const std::filesystem::path& fil
             in.fail("point index " + std::to_string(index) + " out of sequence, expected " +
                     std::to_string(plc.points.index_base + i));
         }
-        plc.points.points.push_back({in.number(tokens[1], "x"), in.number(tokens[2], "y"),
-                                     in.number(tokens[3], "z")});
+        plc.points.points.push_back(
+            {in.number(tokens[1], "x"), in.number(tokens[2], "y"), in.number(tokens[3], "z")});
     }
 }
 
@@ -130,9 +136,10 @@ void check_facet(PolyParser& in, const Plc& plc, const PlcFacet& facet) {
     for (const auto& loop : facet.loops) {
         for (std::size_t i = 0; i < loop.size(); ++i) {
             if (plane->side(plc.points.points[loop[i]]) != predicates::Sign::kZero) {
-                in.source().fail(facet.line, name + ": corner " +
-                                                 std::to_string(loop[i] + plc.points.index_base) +
-                                                 " is not in the plane of the facet");
+                in.source().fail(facet.line,
+                                 name + ": corner " +
+                                     std::to_string(loop[i] + plc.points.index_base) +
+                                     " is not in the plane of the facet");
             }
             const auto& p = plc.points.points[loop[i]];
             const auto& q = plc.points.points[loop[(i + 1) % loop.size()]];
@@ -142,7 +149,9 @@ void check_facet(PolyParser& in, const Plc& plc, const PlcFacet& facet) {
         }
     }
     for (std::size_t h = 0; h < facet.holes.size(); ++h) {
-        const std::string hole = name + ": hole point " + std::to_string(h + 1);
+        const std::string hole =
+            name + ": hole point " +
+            std::to_string(h + static_cast<std::size_t>(plc.points.index_base));
         if (!plane) {
             continue;
         }
@@ -153,8 +162,9 @@ void check_facet(PolyParser& in, const Plc& plc, const PlcFacet& facet) {
             if (loop_position(plc, loop, plane->dropped_axis(), exact_point(facet.holes[h])) ==
                 LoopPosition::kOnBoundary) {
                 in.source().fail(facet.line,
-                                 hole + " lies on a polygon side, so the face it removes is "
-                                        "ambiguous");
+                                 hole +
+                                     " lies on a polygon side, so the face it removes is "
+                                     "ambiguous");
             }
         }
     }

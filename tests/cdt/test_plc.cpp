@@ -1,11 +1,11 @@
 // The PLC itself: validity (how polygons, segments and vertices meet), TetGen's hole rule for facet
 // regions, protection points on edges with decimal coordinates, and ids in messages numbered as
 // the file numbers them.
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
 #include <numeric>
+
+#include <gtest/gtest.h>
 
 #include "cavity/core/cdt.h"
 #include "cavity/core/cdt_validate.h"
@@ -69,8 +69,12 @@ std::vector<Point3> cube_points() {
 }
 
 std::vector<Loops> cube_sides() {
-    return {{{0, 1, 2, 3}}, {{4, 5, 6, 7}}, {{0, 1, 5, 4}},
-            {{1, 2, 6, 5}}, {{2, 3, 7, 6}}, {{3, 0, 4, 7}}};
+    return {{{0, 1, 2, 3}},
+            {{4, 5, 6, 7}},
+            {{0, 1, 5, 4}},
+            {{1, 2, 6, 5}},
+            {{2, 3, 7, 6}},
+            {{3, 0, 4, 7}}};
 }
 
 /// The cube with the square [0.5,3.5]^2 at height 2 (corners 8-11), as facet 6.
@@ -80,7 +84,8 @@ Plc cube_with_square() {
     const double x1 = 3.5;
     auto pts = cube_points();
     const auto n = static_cast<std::uint32_t>(pts.size());
-    for (const auto& [x, y] : std::vector<std::pair<double, double>>{{x0, x0}, {x1, x0}, {x1, x1}, {x0, x1}}) {
+    for (const auto& [x, y] :
+         std::vector<std::pair<double, double>>{{x0, x0}, {x1, x0}, {x1, x1}, {x0, x1}}) {
         pts.push_back({x, y, z});
     }
     auto facets = cube_sides();
@@ -92,7 +97,8 @@ TEST(PlcValidity, ValidPlcsAreAccepted) {
     EXPECT_TRUE(violations(make_plc(cube_points(), cube_sides())).empty());
     // A box with a hole: a square ring through the cube.
     Plc ring = cube_with_square();
-    for (const auto& [x, y] : std::vector<std::pair<double, double>>{{1, 1}, {3, 1}, {3, 3}, {1, 3}}) {
+    for (const auto& [x, y] :
+         std::vector<std::pair<double, double>>{{1, 1}, {3, 1}, {3, 3}, {1, 3}}) {
         ring.points.points.push_back({x, y, 2});
     }
     ring.facets.back().loops.push_back({12, 13, 14, 15});
@@ -188,20 +194,23 @@ TEST(PlcValidity, CoplanarFacetsOverlap) {
     // A small square inside the middle square, as a facet of its own.
     Plc plc = cube_with_square();
     const auto n = static_cast<std::uint32_t>(plc.points.size());
-    for (const auto& [x, y] : std::vector<std::pair<double, double>>{{1, 1}, {3, 1}, {3, 3}, {1, 3}}) {
+    for (const auto& [x, y] :
+         std::vector<std::pair<double, double>>{{1, 1}, {3, 1}, {3, 3}, {1, 3}}) {
         plc.points.points.push_back({x, y, 2});
     }
     plc.facets.push_back({});
     plc.facets.back().loops = {{n, n + 1, n + 2, n + 3}};
     const auto found = violations(plc);
     EXPECT_TRUE(mentions(found, "test: facet 6: edge 1")) << joined(found);
-    EXPECT_TRUE(mentions(found, ", a side of facet 7, lies inside it: the two coplanar facets overlap"))
+    EXPECT_TRUE(
+        mentions(found, ", a side of facet 7, lies inside it: the two coplanar facets overlap"))
         << joined(found);
     // A triangle on two sides of the square: its third side is the square's diagonal.
     Plc half = cube_with_square();
     half.facets.push_back({});
     half.facets.back().loops = {{8, 9, 10}};
-    EXPECT_TRUE(mentions(violations(half), "test: facet 6: edge 8-10, a side of facet 7, lies inside it"))
+    EXPECT_TRUE(
+        mentions(violations(half), "test: facet 6: edge 8-10, a side of facet 7, lies inside it"))
         << joined(violations(half));
 }
 
@@ -216,7 +225,8 @@ TEST(PlcValidity, LoopsCrossInAFacet) {
     pts.insert(pts.end(), flat.begin(), flat.end());
     Plc plc = make_plc(pts, {{{8, 9, 10, 11}, {8, 10, 12}}});
     const auto found = violations(plc);
-    EXPECT_TRUE(mentions(found, "polygon 1 (corners 8 9 10 11) and polygon 2 (corners 8 10 12) cross"))
+    EXPECT_TRUE(
+        mentions(found, "polygon 1 (corners 8 9 10 11) and polygon 2 (corners 8 10 12) cross"))
         << joined(found);
     // Nested (the triangle inside the square, on two of its sides) is fine.
     plc.facets[0].loops[1] = {8, 9, 10};
@@ -226,7 +236,7 @@ TEST(PlcValidity, LoopsCrossInAFacet) {
 TEST(PlcValidity, HolePointOnASide) {
     Plc plc = cube_with_square();
     plc.facets.back().holes.push_back({2, 0.5, 2});
-    EXPECT_TRUE(mentions(violations(plc), "hole point 1 lies on a side of polygon 1"));
+    EXPECT_TRUE(mentions(violations(plc), "hole point 0 lies on a side of polygon 1"));
 }
 
 TEST(PlcValidity, CrossingEdgesStopProtection) {
@@ -279,7 +289,8 @@ TEST(PlcValidity, GridOfCubes) {
     for (std::uint32_t i = 0; i <= n; ++i) {
         for (std::uint32_t j = 0; j <= n; ++j) {
             for (std::uint32_t k = 0; k <= n; ++k) {
-                pts.push_back({static_cast<double>(i), static_cast<double>(j), static_cast<double>(k)});
+                pts.push_back(
+                    {static_cast<double>(i), static_cast<double>(j), static_cast<double>(k)});
             }
         }
     }
@@ -287,9 +298,12 @@ TEST(PlcValidity, GridOfCubes) {
     for (std::uint32_t i = 0; i <= n; ++i) {
         for (std::uint32_t j = 0; j < n; ++j) {
             for (std::uint32_t k = 0; k < n; ++k) {
-                facets.push_back({{id(i, j, k), id(i, j + 1, k), id(i, j + 1, k + 1), id(i, j, k + 1)}});
-                facets.push_back({{id(j, i, k), id(j + 1, i, k), id(j + 1, i, k + 1), id(j, i, k + 1)}});
-                facets.push_back({{id(j, k, i), id(j + 1, k, i), id(j + 1, k + 1, i), id(j, k + 1, i)}});
+                facets.push_back(
+                    {{id(i, j, k), id(i, j + 1, k), id(i, j + 1, k + 1), id(i, j, k + 1)}});
+                facets.push_back(
+                    {{id(j, i, k), id(j + 1, i, k), id(j + 1, i, k + 1), id(j, i, k + 1)}});
+                facets.push_back(
+                    {{id(j, k, i), id(j + 1, k, i), id(j + 1, k + 1, i), id(j, k + 1, i)}});
             }
         }
     }
@@ -303,7 +317,8 @@ TEST(PlcValidity, GridOfCubes) {
     plc.segments.push_back({a, a + 1});
     const auto found = plc_violations(plc, tets);
     ASSERT_EQ(found.size(), 1u) << joined(found);
-    EXPECT_NE(found[0].find("edge 2197-2198 (a segment) crosses it"), std::string::npos) << found[0];
+    EXPECT_NE(found[0].find("edge 2197-2198 (a segment) crosses it"), std::string::npos)
+        << found[0];
 }
 
 // --- TetGen's hole rule -------------------------------------------------------------------------
@@ -319,21 +334,28 @@ struct NestedSquares {
         plc = square_plc();
         facet = square_facet();
     }
+
     static Plc square_plc() {
         Plc p;
         for (double h : {2.0, 1.0, 0.5}) {
-            for (const auto& [x, y] : std::vector<std::pair<double, double>>{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+            for (const auto& [x, y] :
+                 std::vector<std::pair<double, double>>{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
                 p.points.points.push_back({2 + h * x, 2 + h * y, 0});
             }
         }
         return p;
     }
+
     static PlcFacet square_facet() {
         PlcFacet f;
         f.loops = {{0, 1, 2, 3}, {4, 5, 6, 7}, {8, 9, 10, 11}};
         return f;
     }
-    bool in(double x, double y) const { return in_facet_region(plc, facet, plane, exact_point({x, y, 0})); }
+
+    bool in(double x, double y) const {
+        return in_facet_region(plc, facet, plane, exact_point({x, y, 0}));
+    }
+
     Rational area2() const { return facet_region_area2(plc, facet, plane); }
 };
 
@@ -401,7 +423,8 @@ double inner_face_area2(const Cdt& cdt) {
 
 TEST(HoleRule, CdtOfANestedLoopWithAndWithoutAHolePoint) {
     Plc plc = cube_with_square();  // the square [0.5,3.5]^2 at z = 2, corners 8-11
-    for (const auto& [x, y] : std::vector<std::pair<double, double>>{{1, 1}, {3, 1}, {3, 3}, {1, 3}}) {
+    for (const auto& [x, y] :
+         std::vector<std::pair<double, double>>{{1, 1}, {3, 1}, {3, 3}, {1, 3}}) {
         plc.points.points.push_back({x, y, 2});
     }
     plc.facets.back().loops.push_back({12, 13, 14, 15});
@@ -418,7 +441,9 @@ TEST(HoleRule, CdtOfANestedLoopWithAndWithoutAHolePoint) {
 // --- Protection points ---------------------------------------------------------------------------
 
 /// A coordinate with three decimals in [0, 10), as a .poly file would give it.
-double decimal(Random& random) { return static_cast<double>(random.below(10000)) / 1000; }
+double decimal(Random& random) {
+    return static_cast<double>(random.below(10000)) / 1000;
+}
 
 bool strictly_inside(const Point3& a, const Point3& b, const Point3& p) {
     const ExactPoint ea = exact_point(a);
@@ -430,8 +455,8 @@ bool strictly_inside(const Point3& a, const Point3& b, const Point3& p) {
         d[k] = eb[k] - ea[k];
         w[k] = ep[k] - ea[k];
     }
-    const bool collinear = w[1] * d[2] == w[2] * d[1] && w[2] * d[0] == w[0] * d[2] &&
-                           w[0] * d[1] == w[1] * d[0];
+    const bool collinear =
+        w[1] * d[2] == w[2] * d[1] && w[2] * d[0] == w[0] * d[2] && w[0] * d[1] == w[1] * d[0];
     const Rational s = w[0] * d[0] + w[1] * d[1] + w[2] * d[2];
     return collinear && s > 0 && s < d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
 }
@@ -445,7 +470,8 @@ bool midpoint_exact(const Point3& a, const Point3& b) {
 }
 
 /// Prints how often a protection point exists on random edges with decimal coordinates: general
-/// edges, edges in an axis-parallel plane (one coordinate shared), axis-parallel edges (two shared).
+/// edges, edges in an axis-parallel plane (one coordinate shared), axis-parallel edges (two
+/// shared).
 TEST(ProtectionPoint, SuccessOnDecimalEdges) {
     constexpr int kEdges = 2000;
     Random random(2024);
@@ -477,10 +503,16 @@ TEST(ProtectionPoint, SuccessOnDecimalEdges) {
                 ASSERT_TRUE(p && 2 * p->x == a.x + b.x);
             }
         }
-        std::printf("edges with %d shared coordinate(s): protection point %d/%d (%.1f%%), exact "
-                    "midpoint %d/%d (%.1f%%)\n",
-                    shared, found, tested, 100.0 * found / tested, midpoints, tested,
-                    100.0 * midpoints / tested);
+        std::printf(
+            "edges with %d shared coordinate(s): protection point %d/%d (%.1f%%), exact "
+            "midpoint %d/%d (%.1f%%)\n",
+            shared,
+            found,
+            tested,
+            100.0 * found / tested,
+            midpoints,
+            tested,
+            100.0 * midpoints / tested);
         EXPECT_GT(found, midpoints);
     }
 }
@@ -490,20 +522,35 @@ TEST(ProtectionPoint, SuccessOnDecimalEdges) {
 /// (46-48).
 Plc decimal_plc(std::uint64_t seed, bool triangle) {
     Random random(seed);
-    std::vector<Point3> pts{{0.1, 0.2, 0.3}, {9.7, 0.2, 0.3}, {9.7, 9.9, 0.3}, {0.1, 9.9, 0.3},
-                            {0.1, 0.2, 9.1}, {9.7, 0.2, 9.1}, {9.7, 9.9, 9.1}, {0.1, 9.9, 9.1}};
+    std::vector<Point3> pts{{0.1, 0.2, 0.3},
+                            {9.7, 0.2, 0.3},
+                            {9.7, 9.9, 0.3},
+                            {0.1, 9.9, 0.3},
+                            {0.1, 0.2, 9.1},
+                            {9.7, 0.2, 9.1},
+                            {9.7, 9.9, 9.1},
+                            {0.1, 9.9, 9.1}};
     for (int i = 0; i < 30; ++i) {
-        pts.push_back({1 + decimal(random) * 0.8, 1 + decimal(random) * 0.8, 1 + decimal(random) * 0.8});
+        pts.push_back(
+            {1 + decimal(random) * 0.8, 1 + decimal(random) * 0.8, 1 + decimal(random) * 0.8});
     }
-    const std::vector<Point3> rectangles{{1.3, 1.1, 2.7}, {8.6, 1.1, 2.7}, {8.6, 7.9, 2.7}, {1.3, 7.9, 2.7},
-                                         {2.1, 1.7, 3.4}, {2.1, 8.3, 3.4}, {2.1, 8.3, 8.8}, {2.1, 1.7, 8.8}};
+    const std::vector<Point3> rectangles{{1.3, 1.1, 2.7},
+                                         {8.6, 1.1, 2.7},
+                                         {8.6, 7.9, 2.7},
+                                         {1.3, 7.9, 2.7},
+                                         {2.1, 1.7, 3.4},
+                                         {2.1, 8.3, 3.4},
+                                         {2.1, 8.3, 8.8},
+                                         {2.1, 1.7, 8.8}};
     pts.insert(pts.end(), rectangles.begin(), rectangles.end());
     auto facets = cube_sides();
     facets.push_back({{38, 39, 40, 41}});
     facets.push_back({{42, 43, 44, 45}});
     if (triangle) {
         for (int i = 0; i < 3; ++i) {  // below the rectangles
-            pts.push_back({1 + decimal(random) * 0.8, 1 + decimal(random) * 0.8, 0.5 + decimal(random) * 0.2});
+            pts.push_back({1 + decimal(random) * 0.8,
+                           1 + decimal(random) * 0.8,
+                           0.5 + decimal(random) * 0.2});
         }
         facets.push_back({{46, 47, 48}});
     }
@@ -552,7 +599,8 @@ TEST(ExactPlaneSide, AgreesWithTheRationalOffset) {
     }
 }
 
-// --- Ids in messages, numbered as the file numbers them -------------------------------------------
+// --- Ids in messages, numbered as the file numbers them
+// -------------------------------------------
 
 std::filesystem::path write_temp(const std::string& name, const std::string& text) {
     const auto path = std::filesystem::temp_directory_path() / ("cavity_plc_" + name);
@@ -581,14 +629,34 @@ TEST(Messages, PlcViolationsNameFileLineAndFileIds) {
     ASSERT_EQ(plc.points.index_base, 1);
     const auto found = violations(plc);
     ASSERT_EQ(found.size(), 1u) << joined(found);
-    EXPECT_NE(found[0].find(path.string() + ":30: facet 7: edge 13-14 (a segment) crosses it"), std::string::npos) << found[0];
+    EXPECT_NE(found[0].find(path.string() + ":30: facet 7: edge 13-14 (a segment) crosses it"),
+              std::string::npos)
+        << found[0];
     ASSERT_TRUE(unprotected_edges(plc).empty());  // so violations() inserted no point
     try {
         require_valid_plc(plc, delaunay(plc));
         FAIL() << "accepted a segment through a polygon";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("not a piecewise linear complex (1 violation(s)):\n  " +
-                                             found[0]),
+        EXPECT_NE(std::string(e.what()).find(
+                      "not a piecewise linear complex (1 violation(s)):\n  " + found[0]),
+                  std::string::npos)
+            << e.what();
+    }
+    std::filesystem::remove(path);
+}
+
+TEST(Messages, ReaderRefusesAHolePointOnASide) {
+    std::string text = kOneBasedPoly;
+    // Facet 7 gets a hole point on its side 9-10.
+    const std::string square = "1\n4 9 10 11 12\n";
+    text.replace(text.find(square), square.size(), "1 1\n4 9 10 11 12\n1 2 0.5 2\n");
+    const auto path = write_temp("hole_on_side.poly", text);
+    try {
+        read_poly(path);
+        FAIL() << "accepted a hole point on a polygon side";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(path.string() +
+                                             ":30: facet 7: hole point 1 lies on a polygon side"),
                   std::string::npos)
             << e.what();
     }
@@ -599,11 +667,15 @@ TEST(Messages, ValidatorNamesFileIds) {
     const auto path = write_temp("one_based_valid.poly", kOneBasedPoly);
     Plc plc = read_poly(path);
     plc.segments.clear();
+    // A valid mesh passes with the file's numbering (no spurious problem from the shift).
+    const Cdt cdt = build_cdt(plc, CdtOptions{true});
+    EXPECT_TRUE(validate_cdt(cdt.plc, cdt.tets).ok());
     // The Delaunay triangulation crosses the square: named with the file's ids and facet number.
     auto tets = delaunay(plc);
     const CdtValidation crossing = validate_cdt(plc, tets);
     ASSERT_FALSE(crossing.ok());
-    EXPECT_TRUE(mentions(crossing.problems, "crosses facet 7 (line 30)")) << joined(crossing.problems);
+    EXPECT_TRUE(mentions(crossing.problems, "crosses facet 7 (line 30)"))
+        << joined(crossing.problems);
     // A tetrahedron turned inside out: the complex check names it by the file's ids too.
     const auto t = tets.front();
     std::swap(tets.front()[0], tets.front()[1]);
@@ -611,7 +683,8 @@ TEST(Messages, ValidatorNamesFileIds) {
     const std::string name = "(" + std::to_string(t[1] + 1) + " " + std::to_string(t[0] + 1) + " " +
                              std::to_string(t[2] + 1) + " " + std::to_string(t[3] + 1) + ")";
     EXPECT_TRUE(mentions(inverted.problems, name + " is not positively oriented"))
-        << name << "\n" << joined(inverted.problems);
+        << name << "\n"
+        << joined(inverted.problems);
     // An edge needing protection, named by the file's ids.
     Plc needs = read_poly(path);
     needs.points.points[12] = {1, 1, 1};

@@ -18,7 +18,8 @@ using Edge = std::array<std::uint32_t, 2>;
 
 /// The PLC edges (plc_edges) that are not edges of `tets`, the Delaunay triangulation of the
 /// PLC's points (0-based indices). Sorted.
-std::vector<Edge> unprotected_edges(const Plc& plc, std::span<const std::array<std::uint32_t, 4>> tets);
+std::vector<Edge> unprotected_edges(const Plc& plc,
+                                    std::span<const std::array<std::uint32_t, 4>> tets);
 
 /// The PLC edges that are not edges of the Delaunay triangulation of its points.
 /// \throws Error when the points have no 3D triangulation or two points coincide.

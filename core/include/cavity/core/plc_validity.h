@@ -35,8 +35,8 @@ namespace cavity::core {
 /// When the precondition fails, the only message names the edges that are not Delaunay edges.
 /// Cost: candidate pairs come from a uniform grid of bounding boxes (in doubles), so only edges
 /// near a facet and loops near each other reach the exact tests.
-std::vector<std::string> plc_violations(const Plc& plc,
-                                        std::span<const std::array<std::uint32_t, 4>> delaunay_tets);
+std::vector<std::string> plc_violations(
+    const Plc& plc, std::span<const std::array<std::uint32_t, 4>> delaunay_tets);
 
 /// The violations that keep the given PLC edges from ever being protected: a PLC point inside one
 /// of them, or a PLC edge crossing one of them at a point interior to both (exact; no Delaunay
