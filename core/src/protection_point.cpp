@@ -7,8 +7,12 @@
 // progression {(2^q k - a_c) / (b_c - a_c) : k integer}; a point with three double coordinates is a
 // common member of the three progressions, which is again a progression (or nothing), found by the
 // extended Euclidean algorithm. Cutting [0, 1] wherever a coordinate changes binade or sign and
-// solving each piece finds every such point, so the search fails only when the segment has no
-// point with double coordinates strictly inside it.
+// solving each piece finds every such point, with one exception that keeps the cost bounded: the
+// binades more than kDepth = 60 below a coordinate's largest on the segment (where it passes
+// within 2^-60 of its range from zero) form one piece, solved with the spacing of its top binade,
+// which finds only the points there whose coordinate is a multiple of that spacing (zero included).
+// Everything found is a double point of the segment: the spacing used is never finer than the
+// binade's.
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -89,6 +93,8 @@ int spacing_exponent(const Rational& v) {
     return std::ilogb(d) - 52;
 }
 
+constexpr int kDepth = 60;
+
 /// Parameters in (0, 1) where coordinate a_c + t d_c changes sign or binade.
 void add_breakpoints(double a, double b, std::vector<Rational>& out) {
     if (a == b) {
@@ -109,8 +115,10 @@ void add_breakpoints(double a, double b, std::vector<Rational>& out) {
         if (hi <= 0) {
             continue;
         }
-        const int e_lo = lo > 0 ? std::max(std::ilogb(lo), -1022) : -1022;
-        for (int e = e_lo; e <= std::ilogb(hi); ++e) {
+        // Binades more than kDepth below the largest are merged into one piece (see the top).
+        const int e_top = std::ilogb(hi);
+        const int e_lo = std::max({lo > 0 ? std::ilogb(lo) : -1022, -1022, e_top - kDepth});
+        for (int e = e_lo; e <= e_top; ++e) {
             add(Rational(sign * std::ldexp(1.0, e)));
         }
     }

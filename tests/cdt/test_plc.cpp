@@ -517,6 +517,65 @@ TEST(ProtectionPoint, SuccessOnDecimalEdges) {
     }
 }
 
+/// Every point a + t(b - a) with t = k/2^j, j <= 6, whose coordinates are doubles: an independent
+/// (incomplete) search that protection_point must never beat.
+bool dyadic_point_exists(const Point3& a, const Point3& b) {
+    const ExactPoint ea = exact_point(a);
+    const ExactPoint eb = exact_point(b);
+    for (int j = 1; j <= 6; ++j) {
+        for (int k = 1; k < (1 << j); k += 2) {
+            const Rational t(k, 1 << j);
+            bool exact = true;
+            for (std::size_t c = 0; c < 3 && exact; ++c) {
+                const Rational v = ea[c] + t * (eb[c] - ea[c]);
+                exact = Rational(v.convert_to<double>()) == v;
+            }
+            if (exact) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+TEST(ProtectionPoint, FindsWhateverADyadicSearchFinds) {
+    Random random(77);
+    int found = 0;
+    for (int i = 0; i < 200; ++i) {
+        // Coordinates of both signs and mixed binades, so that pieces cross zero and binades.
+        const auto coordinate = [&] {
+            return (decimal(random) - 5) * std::ldexp(1.0, -static_cast<int>(random.below(8)));
+        };
+        const Point3 a{coordinate(), coordinate(), coordinate()};
+        const Point3 b{coordinate(), coordinate(), coordinate()};
+        if (a.x == b.x && a.y == b.y && a.z == b.z) {
+            continue;
+        }
+        const auto p = protection_point(a, b);
+        if (p) {
+            ASSERT_TRUE(strictly_inside(a, b, *p));
+            ++found;
+        } else {
+            ASSERT_FALSE(dyadic_point_exists(a, b));
+        }
+    }
+    EXPECT_GT(found, 10);
+}
+
+TEST(ProtectionPoint, EdgesCrossingZero) {
+    const std::vector<std::array<Point3, 2>> edges{
+        {{{-0.3, -0.7, -0.1}, {0.3, 0.7, 0.1}}},  // through the origin: the midpoint
+        {{{-1.1, -1.3, -1}, {1.7, -1.3, -1}}},    // axis-parallel, crossing x = 0
+        {{{-std::ldexp(1.0, -1000), 0.5, 0.25}, {std::ldexp(3.0, -1000), -0.5, 0.75}}}};  // tiny x
+    for (const auto& e : edges) {
+        const auto p = protection_point(e[0], e[1]);
+        ASSERT_TRUE(p);
+        EXPECT_TRUE(strictly_inside(e[0], e[1], *p));
+    }
+    const Point3 origin = *protection_point(edges[0][0], edges[0][1]);
+    EXPECT_TRUE(origin.x == 0 && origin.y == 0 && origin.z == 0);
+}
+
 /// A box with decimal corners, 30 decimal interior points, two axis-aligned rectangles with decimal
 /// corners (corners 38-41, 42-45), and, when `triangle`, a triangle with decimal corners below them
 /// (46-48).

@@ -33,8 +33,10 @@ struct Protection {
 
 /// The point protect_edges inserts on edge ab: a point strictly inside the segment, exactly on it,
 /// whose coordinates are doubles, as near the middle as the search finds (the midpoint when it is
-/// one). Exact and complete (core/src/protection_point.cpp): nullopt only when the open segment
-/// holds no point with double coordinates at all, and then no split without moving the edge exists.
+/// one). Exact, and complete but for one bounded corner (core/src/protection_point.cpp): nullopt
+/// means the open segment holds no point with double coordinates, except perhaps points where a
+/// coordinate c is below 2^(e-60) in magnitude and not a multiple of 2^(e-113), 2^e being the
+/// largest binade c reaches on the segment (a cap that bounds the work near zero crossings).
 /// Such points are rare on segments between arbitrary doubles: a coordinate's doubles along the
 /// segment recur every 2^q / |b_c - a_c| in t, and the three recurrences must meet.
 /// Measured (ProtectionPoint.SuccessOnDecimalEdges in tests/cdt/test_plc.cpp: about 2000 random
