@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <string>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "cavity/core/error.h"
@@ -183,16 +182,15 @@ bool FacetGeometry::face_in_region(std::span<const VertexId> on) {
 PolygonRegion find_polygon_region(const ArrayStorage& storage, FacetGeometry& facet) {
     using Contact = FacetGeometry::Contact;
     PolygonRegion region;
-    std::unordered_map<TetId, Contact> tested;
+    std::unordered_set<TetId> tested;
     std::vector<TetId> stack;
     // Tests t once; a touching or crossing t joins its list and waits on the stack for its
     // neighbours to be tested.
     const auto test = [&](TetId t) {
-        if (tested.contains(t)) {
+        if (!tested.insert(t).second) {
             return;
         }
         const Contact c = facet.contact(storage.vertices(t));
-        tested.emplace(t, c);
         if (c != Contact::kNone) {
             (c == Contact::kCrosses ? region.tets : region.touching_outside).push_back(t);
             stack.push_back(t);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <numeric>
 #include <set>
@@ -504,6 +505,14 @@ TEST(PolygonInsertion, SearchStaysLocal) {
     const PolygonWork& w = inserted.counters.per_polygon.at(0);
     EXPECT_GT(w.region_tets, 0u);
     EXPECT_LT(10 * (w.rotary_steps + w.search_visited), inserted.scan);
+    std::printf("|R| = %llu, m = %llu: steps 1-2 looked at %llu tetrahedra (rotary %llu, "
+                "depth-first %llu); a scan tests %llu\n",
+                static_cast<unsigned long long>(w.region_tets),
+                static_cast<unsigned long long>(w.region_vertices),
+                static_cast<unsigned long long>(w.rotary_steps + w.search_visited),
+                static_cast<unsigned long long>(w.rotary_steps),
+                static_cast<unsigned long long>(w.search_visited),
+                static_cast<unsigned long long>(inserted.scan));
 }
 
 }  // namespace
