@@ -472,5 +472,49 @@ TEST(CdtVertexInsertion, WrittenPlcReadsBack) {
     EXPECT_TRUE(validate_cdt(back, live.tets()).ok());
 }
 
+/// Sequences on the three PLCs, a third of the points on a quarter grid (on polygons and edges,
+/// cospherical with the box corners): every accepted insertion leaves a valid CDT equal to the
+/// rebuild whenever the rebuild can start, and no refused point has a CDT build_cdt can make.
+TEST(CdtVertexInsertion, SequencesAgainstRebuild) {
+    std::size_t accepted = 0;
+    std::size_t compared = 0;
+    std::size_t refused = 0;
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+        LiveCdt live(seed % 3 == 0 ? closed_polytope() : seed % 3 == 1 ? cube_with_middle_square() : closed_box(),
+                     CdtOptions{true});
+        Random random(1000 + seed);
+        for (int i = 0; i < 100; ++i) {
+            Point3 p = random_point(random, -1, 5);
+            if (i % 3 == 0) {
+                p = {std::round(4 * p.x) / 4, std::round(4 * p.y) / 4, std::round(4 * p.z) / 4};
+            }
+            const CdtInsertion r = live.insert_vertex(p);
+            Plc augmented = live.plc();
+            if (r.status == CdtInsertionStatus::kDuplicate) {
+                continue;
+            }
+            if (!r.inserted()) {
+                ++refused;
+                augmented.points.points.push_back(p);
+                EXPECT_THROW(build_cdt(augmented, CdtOptions{false}), Error) << r.message;
+                continue;
+            }
+            ++accepted;
+            ASSERT_TRUE(validate_cdt(live.plc(), live.tets()).ok()) << "seed " << seed << " point " << i;
+            ASSERT_TRUE(check_complex(live.storage(), live.geometry()).empty());
+            try {
+                const Cdt rebuilt = build_cdt(augmented, CdtOptions{false});
+                EXPECT_EQ(test::canonical(rebuilt.tets), test::canonical(live.tets()));
+                ++compared;
+            } catch (const Error& e) {
+                EXPECT_NE(std::string(e.what()).find("not edge-protected"), std::string::npos) << e.what();
+            }
+        }
+    }
+    EXPECT_GT(accepted, 250u);
+    EXPECT_GT(compared, 80u);
+    EXPECT_GT(refused, 0u);
+}
+
 }  // namespace
 }  // namespace cavity::core
