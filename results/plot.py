@@ -326,19 +326,23 @@ def plot_giftwrap(inp, out, md):
     md.append("| dist | n | h | h/n | apex tests/(n h) | insphere/(n h) | gift-wrap s | Bowyer–Watson s | "
               "time ratio | BW predicates/n | predicate ratio GW/BW | same_tets |")
     md.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
-    for (dist,), rs in sorted(group(rows, "dist").items()):
+    for k, ((dist,), rs) in enumerate(sorted(group(rows, "dist").items())):
+        c = f"C{k}"
         rs = sorted(rs, key=lambda r: int(r["points"]))
         ns = [int(r["points"]) for r in rs]
         nh = [n * num(r, "tets") for n, r in zip(ns, rs)]
         apex = [num(r, "apex_orient_tests") for r in rs]
         gw = [num(r, "gw_s") for r in rs]
         bw = [num(r, "bw_s") for r in rs]
-        axes[0].loglog(nh, apex, "o-", ms=3, label=f"{dist} apex orient3d (slope {slope(nh, apex):.3f})")
-        axes[0].loglog(nh, [num(r, "gw_insphere_calls") for r in rs], "s--", ms=3,
+        axes[0].loglog(nh, apex, "o-", ms=3, color=c,
+                       label=f"{dist} apex orient3d (slope {slope(nh, apex):.3f})")
+        axes[0].loglog(nh, [num(r, "gw_insphere_calls") for r in rs], "s--", ms=3, color=c,
                        label=f"{dist} insphere")
-        axes[1].loglog(ns, gw, "o-", ms=3, label=f"{dist} gift-wrap (slope {slope(ns, gw):.2f})")
-        axes[1].loglog(ns, bw, "s--", ms=3, label=f"{dist} Bowyer–Watson (slope {slope(ns, bw):.2f})")
-        axes[2].semilogx(ns, [num(r, "gw_over_bw_predicates") for r in rs], "o-", ms=3, label=dist)
+        axes[1].loglog(ns, gw, "o-", ms=3, color=c, label=f"{dist} gift-wrap (slope {slope(ns, gw):.2f})")
+        axes[1].loglog(ns, bw, "s--", ms=3, color=c,
+                       label=f"{dist} Bowyer–Watson (slope {slope(ns, bw):.2f})")
+        axes[2].semilogx(ns, [num(r, "gw_over_bw_predicates") for r in rs], "o-", ms=3, color=c,
+                         label=dist)
         for r in rs:
             md.append(f"| {dist} | {r['points']} | {r['tets']} | {num(r, 'tets') / num(r, 'points'):.2f} | "
                       f"{num(r, 'apex_per_nh'):.3f} | {num(r, 'insphere_per_nh'):.3f} | {num(r, 'gw_s'):.3g} | "
@@ -454,18 +458,25 @@ def plot_cdt(inp, out, md):
               "max flips/m² | polygons with flips ≥ m² | max m | max events/(m² ln m) | events/(n² ln n) | "
               "DFS visits/|R| | insert s | valid |")
     md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    slopes = []
     for (family,), rs in sorted(group(rows, "dist").items()):
         color = FAMILY_COLORS.get(family)
         rs = sorted(rs, key=lambda r: (int(r["n"]), int(r["seed"])))
         n = [num(r, "vertices") for r in rs]
         flips = [max(num(r, "flips"), 0.5) for r in rs]
         axes[2].loglog(n, flips, "o", ms=4, color=color, label=f"{family} (slope {slope(n, flips):.2f})")
+        insert = [num(r, "insert_s") for r in rs]
+        slopes.append(f"- {family}: fitted slope of all flips vs n {slope(n, flips):.2f}, of events "
+                      f"{slope(n, [max(num(r, 'events_queued'), 0.5) for r in rs]):.2f}, of insertion "
+                      f"time {slope(n, insert):.2f} (n = {int(min(n))}–{int(max(n))})")
         for r in rs:
             md.append(f"| {family} | {r['points']} | {r['vertices']} | {r['polygons']} | "
                       f"{r['protection_points']} | {r['flips']} | {num(r, 'flips_per_n2'):.2e} | "
                       f"{r['max_flips_per_m2']} | {r['polygons_at_or_over_m2']} | {r['max_m']} | "
                       f"{r['max_events_per_m2_log_m']} | {num(r, 'events_per_n2_log_n'):.2e} | "
                       f"{num(r, 'search_per_region_tet'):.2f} | {num(r, 'insert_s'):.3g} | {r['valid']} |")
+    md.append("")
+    md += slopes
     lo = min(num(r, "vertices") for r in rows)
     hi = max(num(r, "vertices") for r in rows)
     axes[2].loglog([lo, hi], [lo**2, hi**2], "k:", lw=1, label="n² (Prop. 5.6 bound)")
