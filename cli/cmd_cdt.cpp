@@ -48,9 +48,15 @@ void insert_points(core::LiveCdt& live, const CdtArgs& args) {
             continue;
         }
         char where[160];
-        std::snprintf(where, sizeof where, "point %zu (%.17g %.17g %.17g): ",
-                      i + static_cast<std::size_t>(points.index_base), p.x, p.y, p.z);
-        const std::string message = core::located_message(args.insert, std::nullopt, where + r.message);
+        std::snprintf(where,
+                      sizeof where,
+                      "point %zu (%.17g %.17g %.17g): ",
+                      i + static_cast<std::size_t>(points.index_base),
+                      p.x,
+                      p.y,
+                      p.z);
+        const std::string message =
+            core::located_message(args.insert, std::nullopt, where + r.message);
         if (args.all_or_nothing) {
             throw core::Error(message + " (--all-or-nothing: nothing written)");
         }
@@ -62,23 +68,26 @@ void insert_points(core::LiveCdt& live, const CdtArgs& args) {
 
 void print_insertions(const core::Cdt& cdt, const CdtArgs& args) {
     const auto& c = cdt.insertion;
-    std::printf("inserted %llu of %llu points from %s (%llu refused: %llu not star-shaped, %llu "
-                "through the cavity, %llu not Delaunay; %llu duplicates)\n",
-                static_cast<unsigned long long>(c.inserted),
-                static_cast<unsigned long long>(c.attempts), args.insert.c_str(),
-                static_cast<unsigned long long>(c.attempts - c.inserted),
-                static_cast<unsigned long long>(c.refused_not_star_shaped),
-                static_cast<unsigned long long>(c.refused_through_cavity),
-                static_cast<unsigned long long>(c.refused_not_delaunay),
-                static_cast<unsigned long long>(c.duplicates));
-    std::printf("insertion: %llu on polygons, %llu on PLC edges; tetrahedra deleted %llu, created "
-                "%llu; conflict tests %llu, walk steps %llu\n",
-                static_cast<unsigned long long>(c.on_polygon),
-                static_cast<unsigned long long>(c.on_plc_edge),
-                static_cast<unsigned long long>(c.tets_deleted),
-                static_cast<unsigned long long>(c.tets_created),
-                static_cast<unsigned long long>(c.conflict_tests),
-                static_cast<unsigned long long>(c.walk_steps));
+    std::printf(
+        "inserted %llu of %llu points from %s (%llu refused: %llu not star-shaped, %llu "
+        "through the cavity, %llu not Delaunay; %llu duplicates)\n",
+        static_cast<unsigned long long>(c.inserted),
+        static_cast<unsigned long long>(c.attempts),
+        args.insert.c_str(),
+        static_cast<unsigned long long>(c.attempts - c.inserted),
+        static_cast<unsigned long long>(c.refused_not_star_shaped),
+        static_cast<unsigned long long>(c.refused_through_cavity),
+        static_cast<unsigned long long>(c.refused_not_delaunay),
+        static_cast<unsigned long long>(c.duplicates));
+    std::printf(
+        "insertion: %llu on polygons, %llu on PLC edges; tetrahedra deleted %llu, created "
+        "%llu; conflict tests %llu, walk steps %llu\n",
+        static_cast<unsigned long long>(c.on_polygon),
+        static_cast<unsigned long long>(c.on_plc_edge),
+        static_cast<unsigned long long>(c.tets_deleted),
+        static_cast<unsigned long long>(c.tets_created),
+        static_cast<unsigned long long>(c.conflict_tests),
+        static_cast<unsigned long long>(c.walk_steps));
 }
 
 void run_cdt(const CdtArgs& args) {
@@ -103,26 +112,32 @@ void run_cdt(const CdtArgs& args) {
         std::printf("protecting vertex %u: %.17g %.17g %.17g\n", v + base, p.x, p.y, p.z);
     }
     const auto& c = cdt.counters;
-    std::printf("%zu points (%zu inserted for protection), %zu polygons: %zu tetrahedra, %zu polygon "
-                "triangles\n",
-                cdt.plc.points.size(), cdt.protection.inserted.size(), cdt.plc.facets.size(),
-                cdt.tets.size(), cdt.faces.size());
-    std::printf("flips 2-3 %llu, 3-2 %llu, 4-4 %llu; events queued %llu, stale %llu, held back %llu; "
-                "region tetrahedra %llu, largest region %llu vertices\n",
-                static_cast<unsigned long long>(c.flips.flip_count(core::FlipKind::k23)),
-                static_cast<unsigned long long>(c.flips.flip_count(core::FlipKind::k32)),
-                static_cast<unsigned long long>(c.flips.flip_count(core::FlipKind::k44)),
-                static_cast<unsigned long long>(c.events_queued),
-                static_cast<unsigned long long>(c.events_stale),
-                static_cast<unsigned long long>(c.events_held),
-                static_cast<unsigned long long>(c.region_tets),
-                static_cast<unsigned long long>(c.max_region_vertices));
+    std::printf(
+        "%zu points (%zu inserted for protection), %zu polygons: %zu tetrahedra, %zu polygon "
+        "triangles\n",
+        cdt.plc.points.size(),
+        cdt.protection.inserted.size(),
+        cdt.plc.facets.size(),
+        cdt.tets.size(),
+        cdt.faces.size());
+    std::printf(
+        "flips 2-3 %llu, 3-2 %llu, 4-4 %llu; events queued %llu, stale %llu, held back %llu; "
+        "region tetrahedra %llu, largest region %llu vertices\n",
+        static_cast<unsigned long long>(c.flips.flip_count(core::FlipKind::k23)),
+        static_cast<unsigned long long>(c.flips.flip_count(core::FlipKind::k32)),
+        static_cast<unsigned long long>(c.flips.flip_count(core::FlipKind::k44)),
+        static_cast<unsigned long long>(c.events_queued),
+        static_cast<unsigned long long>(c.events_stale),
+        static_cast<unsigned long long>(c.events_held),
+        static_cast<unsigned long long>(c.region_tets),
+        static_cast<unsigned long long>(c.max_region_vertices));
     if (!args.insert.empty()) {
         print_insertions(cdt, args);
     }
-    std::printf("valid: constrained Delaunay (checked exactly); wrote %s.node, .ele, .face, .vtu, "
-                ".poly\n",
-                args.prefix.c_str());
+    std::printf(
+        "valid: constrained Delaunay (checked exactly); wrote %s.node, .ele, .face, .vtu, "
+        ".poly\n",
+        args.prefix.c_str());
 }
 
 }  // namespace
@@ -134,18 +149,22 @@ void add_cdt_command(CLI::App& app) {
         "Constrained Delaunay tetrahedralization of a TetGen .poly PLC: Delaunay triangulation of "
         "its vertices, then flip-based polygon insertion (§5.8); the PLC must be edge-protected");
     cmd->add_option("input", args->input, "the PLC (.poly)")->required();
-    cmd->add_option("-o,--output", args->prefix,
+    cmd->add_option("-o,--output",
+                    args->prefix,
                     "output prefix: PREFIX.node .ele .face .vtu, and PREFIX.poly, the PLC the mesh "
                     "conforms to (with protecting and inserted vertices) for `cavity check --poly`")
         ->required();
-    cmd->add_flag("--protect", args->protect,
+    cmd->add_flag("--protect",
+                  args->protect,
                   "split PLC edges that are not Delaunay (at exact midpoints) until it is "
                   "edge-protected");
-    cmd->add_option("--insert", args->insert,
+    cmd->add_option("--insert",
+                    args->insert,
                     "after the polygons, insert these points (.node, .xyz, .ply) in file order "
                     "(§5.7); a point that cannot be inserted (or repeats a vertex) is reported on "
                     "stderr by its number in the file and left out, and the exit status stays 0");
-    cmd->add_flag("--all-or-nothing", args->all_or_nothing,
+    cmd->add_flag("--all-or-nothing",
+                  args->all_or_nothing,
                   "with --insert: any point left out is an error (exit status 1, nothing written)");
     cmd->add_flag("--quiet", args->quiet, "print nothing on success (refusals still go to stderr)");
     cmd->callback([args] { run_cdt(*args); });

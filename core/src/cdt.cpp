@@ -34,7 +34,8 @@ std::vector<std::array<std::uint32_t, 4>> protected_delaunay(const Plc& plc) {
     Triangulation dt = triangulate(plc.points, sequence, TriangulateOptions{});
     if (!dt.duplicates.empty()) {
         const auto& d = dt.duplicates.front();
-        throw Error(located_message(plc.source, std::nullopt,
+        throw Error(located_message(plc.source,
+                                    std::nullopt,
                                     "points " + std::to_string(d[0] + plc.points.index_base) +
                                         " and " + std::to_string(d[1] + plc.points.index_base) +
                                         " coincide"));
@@ -42,7 +43,8 @@ std::vector<std::array<std::uint32_t, 4>> protected_delaunay(const Plc& plc) {
     const std::vector<Edge> missing = unprotected_edges(plc, dt.tets);
     if (!missing.empty()) {
         throw Error(located_message(
-            plc.source, std::nullopt,
+            plc.source,
+            std::nullopt,
             "the PLC is not edge-protected: " + std::to_string(missing.size()) +
                 " edge(s) are not Delaunay edges of its vertices:" + edge_list(plc, missing) +
                 " (the flip-based CDT needs edge protection; --protect splits them)"));
@@ -53,13 +55,15 @@ std::vector<std::array<std::uint32_t, 4>> protected_delaunay(const Plc& plc) {
 }  // namespace
 
 LiveCdt::LiveCdt(Plc plc, const CdtOptions& options)
-    : protection_(options.protect ? protect_edges(plc, options.max_protection_points) : Protection{})
+    : protection_(options.protect ? protect_edges(plc, options.max_protection_points)
+                                  : Protection{})
     , plc_(std::move(plc))
     , geometry_(geometry_by_index(plc_.points)) {
     storage_ = complex_from_tets(protected_delaunay(plc_));
     ConstrainedFaces constrained;
     for (std::size_t f = 0; f < plc_.facets.size(); ++f) {
-        for (const auto& g : insert_polygon(storage_, geometry_, plc_, f, constrained, polygon_counters_)) {
+        for (const auto& g :
+             insert_polygon(storage_, geometry_, plc_, f, constrained, polygon_counters_)) {
             add_face(g, static_cast<std::uint32_t>(f));
         }
     }
@@ -69,7 +73,9 @@ LiveCdt::LiveCdt(Plc plc, const CdtOptions& options)
     validate();
 }
 
-std::vector<std::array<std::uint32_t, 4>> LiveCdt::tets() const { return solid_tets(storage_); }
+std::vector<std::array<std::uint32_t, 4>> LiveCdt::tets() const {
+    return solid_tets(storage_);
+}
 
 void LiveCdt::validate() const {
     const CdtValidation check = validate_cdt(plc_, tets());
@@ -78,7 +84,7 @@ void LiveCdt::validate() const {
         return;
     }
     std::string message = "internal error: the constructed mesh is not a CDT (" +
-                           std::to_string(check.problem_count + complex.size()) + " problem(s)):";
+                          std::to_string(check.problem_count + complex.size()) + " problem(s)):";
     for (const auto& p : check.problems) {
         message += "\n  " + p;
     }

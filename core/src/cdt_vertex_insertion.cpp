@@ -30,7 +30,9 @@ bool has_ghost(const Triangle& t) {
     return t[0] == kGhostVertex || t[1] == kGhostVertex || t[2] == kGhostVertex;
 }
 
-std::uint64_t directed(VertexId p, VertexId q) { return (std::uint64_t{p} << 32) | q; }
+std::uint64_t directed(VertexId p, VertexId q) {
+    return (std::uint64_t{p} << 32) | q;
+}
 
 }  // namespace
 
@@ -52,7 +54,9 @@ bool LiveCdt::Carrier::is_edge(VertexId a, VertexId b) const {
 }
 
 std::string LiveCdt::name(VertexId v) const {
-    return v == kGhostVertex ? "g" : std::to_string(v + static_cast<std::uint32_t>(plc_.points.index_base));
+    return v == kGhostVertex
+               ? "g"
+               : std::to_string(v + static_cast<std::uint32_t>(plc_.points.index_base));
 }
 
 std::string LiveCdt::triangle_name(const Triangle& t) const {
@@ -106,13 +110,18 @@ LiveCdt::Carrier LiveCdt::locate(const Point3& p) {
         for (int k = 0; k < 4 && exit < 0; ++k) {
             const int f = (first + k) & 3;
             const auto tri = facet_vertices(v, f);
-            const Sign s = Geometry::orient3d(geometry_.point(tri[0]), geometry_.point(tri[1]),
-                                              geometry_.point(tri[2]), p, nullptr);
+            const Sign s = Geometry::orient3d(geometry_.point(tri[0]),
+                                              geometry_.point(tri[1]),
+                                              geometry_.point(tri[2]),
+                                              p,
+                                              nullptr);
             if (s == Sign::kNeg && f != entered) {
                 exit = f;
             } else if (s == Sign::kPos) {
-                // Facet f's sign is the barycentric sign of vertex f: nonzero puts it in the carrier.
-                carrier.v[static_cast<std::size_t>(carrier.size++)] = v[static_cast<std::size_t>(f)];
+                // Facet f's sign is the barycentric sign of vertex f: nonzero puts it in the
+                // carrier.
+                carrier.v[static_cast<std::size_t>(carrier.size++)] =
+                    v[static_cast<std::size_t>(f)];
             }
         }
         if (exit < 0) {
@@ -133,7 +142,8 @@ bool LiveCdt::conflicts(TetId t, VertexId u) {
     }
     // The coplanar case needs a vertex strictly behind the hull triangle: the solid apex.
     const HalfFacet behind = storage_.adjacent(t, 3);
-    const VertexId apex = storage_.vertices(tet_of(behind))[static_cast<std::size_t>(facet_of(behind))];
+    const VertexId apex =
+        storage_.vertices(tet_of(behind))[static_cast<std::size_t>(facet_of(behind))];
     return geometry_.conflicts_ghost(v, u, {apex, apex, apex, apex}, nullptr);
 }
 
@@ -186,7 +196,8 @@ LiveCdt::Cavity LiveCdt::dig(const Carrier& carrier, VertexId u) {
         }
     }
     // A polygon face found before the search reached its far side from elsewhere is no cavity face.
-    std::erase_if(cavity.faces, [&](const CavityFace& face) { return in_cavity(tet_of(face.across)); });
+    std::erase_if(cavity.faces,
+                  [&](const CavityFace& face) { return in_cavity(tet_of(face.across)); });
     return cavity;
 }
 
@@ -235,7 +246,9 @@ LiveCdt::Star LiveCdt::make_star(const Cavity& cavity, VertexId u) const {
 /// cavity give way to v joined to the boundary edges of their union (an edge holding v is no
 /// boundary: v splits it). A doubled triangle of another polygon is diagnosis 2, and so is a new
 /// triangle whose edge lies on no cavity face (it would not be a face of the new tetrahedra).
-std::string LiveCdt::retriangulate_polygons(Cavity& cavity, const Carrier& carrier, VertexId u,
+std::string LiveCdt::retriangulate_polygons(Cavity& cavity,
+                                            const Carrier& carrier,
+                                            VertexId u,
                                             std::vector<PolygonTriangle>& added) const {
     std::set<std::uint32_t> facets;
     for (const Triangle& key : cavity.split) {
@@ -254,14 +267,17 @@ std::string LiveCdt::retriangulate_polygons(Cavity& cavity, const Carrier& carri
     for (const Triangle& key : cavity.split) {
         const std::uint32_t facet = face_facet_[face_index_.at(key)];
         for (int i = 0; i < 3; ++i) {
-            ++uses[{facet, sorted_edge(key[static_cast<std::size_t>(i)], key[static_cast<std::size_t>((i + 1) % 3)])}];
+            ++uses[{facet,
+                    sorted_edge(key[static_cast<std::size_t>(i)],
+                                key[static_cast<std::size_t>((i + 1) % 3)])}];
         }
     }
     std::set<PlcEdge> kept;
     for (const CavityFace& face : cavity.faces) {
         const Triangle tri = facet_vertices(storage_.vertices(face.inner), face.facet);
         for (int i = 0; i < 3; ++i) {
-            kept.insert(sorted_edge(tri[static_cast<std::size_t>(i)], tri[static_cast<std::size_t>((i + 1) % 3)]));
+            kept.insert(sorted_edge(tri[static_cast<std::size_t>(i)],
+                                    tri[static_cast<std::size_t>((i + 1) % 3)]));
         }
     }
     for (const Triangle& key : cavity.split) {
@@ -275,8 +291,8 @@ std::string LiveCdt::retriangulate_polygons(Cavity& cavity, const Carrier& carri
             }
             if (kept.count(sorted_edge(a, b)) == 0) {
                 return "the polygon of triangle " + triangle_name(key) +
-                       " cannot be retriangulated around the new vertex: its edge " + name(a) + "-" +
-                       name(b) + " lies inside the cavity";
+                       " cannot be retriangulated around the new vertex: its edge " + name(a) +
+                       "-" + name(b) + " lies inside the cavity";
             }
             Triangle replaced{old.v[0], old.v[1], old.v[2]};
             replaced[k] = u;
@@ -296,7 +312,8 @@ std::string LiveCdt::through_cavity(const Cavity& cavity, const Carrier& carrier
         const Triangle tri = facet_vertices(storage_.vertices(face.inner), face.facet);
         for (int i = 0; i < 3; ++i) {
             kept_vertices.insert(tri[static_cast<std::size_t>(i)]);
-            kept_edges.insert(sorted_edge(tri[static_cast<std::size_t>(i)], tri[static_cast<std::size_t>((i + 1) % 3)]));
+            kept_edges.insert(sorted_edge(tri[static_cast<std::size_t>(i)],
+                                          tri[static_cast<std::size_t>((i + 1) % 3)]));
         }
     }
     for (TetId t : cavity.tets) {
@@ -339,7 +356,8 @@ std::string LiveCdt::not_star_shaped(const Cavity& cavity, const Star& star) con
         const TetVertices& v = star.tets[n];
         if (is_ghost(v)) {
             const HalfFacet across = cavity.faces[n].across;
-            const VertexId w = storage_.vertices(tet_of(across))[static_cast<std::size_t>(facet_of(across))];
+            const VertexId w =
+                storage_.vertices(tet_of(across))[static_cast<std::size_t>(facet_of(across))];
             if (in_front(v, w)) {
                 return hull_name(v) + name(w) + " in front of it";
             }
@@ -347,9 +365,10 @@ std::string LiveCdt::not_star_shaped(const Cavity& cavity, const Star& star) con
         }
         const Sign s = geometry_.orient3d(v[0], v[1], v[2], v[3], nullptr);
         if (s != Sign::kPos) {
-            const Triangle tri = facet_vertices(storage_.vertices(cavity.faces[n].inner), cavity.faces[n].facet);
-            return "the cavity is not star-shaped from the new vertex: its face " + triangle_name(tri) +
-                   " and the new vertex make a tetrahedron of " +
+            const Triangle tri =
+                facet_vertices(storage_.vertices(cavity.faces[n].inner), cavity.faces[n].facet);
+            return "the cavity is not star-shaped from the new vertex: its face " +
+                   triangle_name(tri) + " and the new vertex make a tetrahedron of " +
                    (s == Sign::kZero ? "zero volume" : "negative orientation");
         }
     }
@@ -357,9 +376,11 @@ std::string LiveCdt::not_star_shaped(const Cavity& cavity, const Star& star) con
         const TetVertices& a = star.tets[tet_of(h1)];
         const TetVertices& b = star.tets[tet_of(h2)];
         if (is_ghost(a) && is_ghost(b)) {
-            for (const auto& [g, other, s] : {std::tuple{a, b, facet_of(h2)}, std::tuple{b, a, facet_of(h1)}}) {
+            for (const auto& [g, other, s] :
+                 {std::tuple{a, b, facet_of(h2)}, std::tuple{b, a, facet_of(h1)}}) {
                 if (in_front(g, other[static_cast<std::size_t>(s)])) {
-                    return hull_name(g) + name(other[static_cast<std::size_t>(s)]) + " in front of it";
+                    return hull_name(g) + name(other[static_cast<std::size_t>(s)]) +
+                           " in front of it";
                 }
             }
         }
@@ -373,7 +394,8 @@ std::string LiveCdt::not_star_shaped(const Cavity& cavity, const Star& star) con
 /// a CDT is not, and a new tetrahedron may take in a vertex that a polygon hid from the deleted
 /// ones (or the perturbation fixed a polygon's triangulation from its other side). Then the PLC
 /// with v has no CDT that keeps the rest, and v is refused like the chapter's two diagnoses.
-std::string LiveCdt::not_delaunay(const Star& star, const std::vector<PolygonTriangle>& added) const {
+std::string LiveCdt::not_delaunay(const Star& star,
+                                  const std::vector<PolygonTriangle>& added) const {
     std::set<Triangle> polygon;
     for (const PolygonTriangle& t : added) {
         polygon.insert(sorted(t.v));
@@ -420,8 +442,11 @@ void LiveCdt::split_plc_edge(const PlcEdge& e, std::uint32_t m) {
     plc_edges_.insert(sorted_edge(m, e[1]));
 }
 
-void LiveCdt::commit(const Cavity& cavity, const Star& star, const std::vector<PolygonTriangle>& added,
-                     const Carrier& carrier, VertexId u) {
+void LiveCdt::commit(const Cavity& cavity,
+                     const Star& star,
+                     const std::vector<PolygonTriangle>& added,
+                     const Carrier& carrier,
+                     VertexId u) {
     for (TetId t : cavity.tets) {
         ++(is_ghost(storage_.vertices(t)) ? counters_.ghosts_deleted : counters_.tets_deleted);
         storage_.delete_tetrahedron(t);
@@ -440,7 +465,8 @@ void LiveCdt::commit(const Cavity& cavity, const Star& star, const std::vector<P
         }
     }
     for (const auto& [h1, h2] : star.around) {
-        storage_.glue(half_facet(ids[tet_of(h1)], facet_of(h1)), half_facet(ids[tet_of(h2)], facet_of(h2)));
+        storage_.glue(half_facet(ids[tet_of(h1)], facet_of(h1)),
+                      half_facet(ids[tet_of(h2)], facet_of(h2)));
     }
     storage_.end_operation();
     for (const Triangle& key : cavity.split) {
@@ -462,14 +488,15 @@ void LiveCdt::commit(const Cavity& cavity, const Star& star, const std::vector<P
 
 CdtInsertion LiveCdt::insert_vertex(const Point3& p) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-        throw Error(located_message(plc_.source, std::nullopt,
-                                    "cannot insert a point with a non-finite coordinate"));
+        throw Error(located_message(
+            plc_.source, std::nullopt, "cannot insert a point with a non-finite coordinate"));
     }
     ++counters_.attempts;
     const Carrier carrier = locate(p);
     if (carrier.size == 1) {
         ++counters_.duplicates;
-        return {CdtInsertionStatus::kDuplicate, carrier.v[0],
+        return {CdtInsertionStatus::kDuplicate,
+                carrier.v[0],
                 "the point coincides with vertex " + name(carrier.v[0])};
     }
     const VertexId u = geometry_.append_point(p);

@@ -2,14 +2,14 @@
 // of a PLC is unique, so inserting v must give exactly the tetrahedra build_cdt makes from scratch
 // for the PLC with v appended (and its edges split where v lies on them); a refused vertex must
 // leave everything as it was.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "canonical.h"
 #include "cavity/core/cdt_validate.h"
@@ -24,7 +24,8 @@ namespace {
 
 using Loops = std::vector<std::vector<std::uint32_t>>;
 
-Plc make_plc(std::vector<Point3> points, const std::vector<Loops>& facets,
+Plc make_plc(std::vector<Point3> points,
+             const std::vector<Loops>& facets,
              std::vector<std::array<std::uint32_t, 2>> segments = {}) {
     Plc plc;
     plc.source = "test";
@@ -40,13 +41,24 @@ Plc make_plc(std::vector<Point3> points, const std::vector<Loops>& facets,
 }
 
 std::vector<Point3> box_corners(double x, double y, double z0, double z1) {
-    return {{0, 0, z0}, {x, 0, z0}, {x, y, z0}, {0, y, z0}, {0, 0, z1}, {x, 0, z1}, {x, y, z1}, {0, y, z1}};
+    return {{0, 0, z0},
+            {x, 0, z0},
+            {x, y, z0},
+            {0, y, z0},
+            {0, 0, z1},
+            {x, 0, z1},
+            {x, y, z1},
+            {0, y, z1}};
 }
 
 /// The six faces of a box made by box_corners starting at point `b`.
 std::vector<Loops> box_faces(std::uint32_t b) {
-    return {{{b, b + 3, b + 2, b + 1}}, {{b + 4, b + 5, b + 6, b + 7}}, {{b, b + 1, b + 5, b + 4}},
-            {{b + 1, b + 2, b + 6, b + 5}}, {{b + 2, b + 3, b + 7, b + 6}}, {{b + 3, b, b + 4, b + 7}}};
+    return {{{b, b + 3, b + 2, b + 1}},
+            {{b + 4, b + 5, b + 6, b + 7}},
+            {{b, b + 1, b + 5, b + 4}},
+            {{b + 1, b + 2, b + 6, b + 5}},
+            {{b + 2, b + 3, b + 7, b + 6}},
+            {{b + 3, b, b + 4, b + 7}}};
 }
 
 /// Points of a jittered binary grid inside (0, 4)^3.
@@ -68,7 +80,8 @@ Point3 random_point(Random& random, double lo, double hi) {
 /// A cube [0,4]^3 whose top, bottom and a middle square are polygons, with grid points inside.
 Plc cube_with_middle_square() {
     auto pts = box_corners(4, 4, 0, 4);
-    const std::vector<Point3> mid{{0, 0, 2.03125}, {4, 0, 2.03125}, {4, 4, 2.03125}, {0, 4, 2.03125}};
+    const std::vector<Point3> mid{
+        {0, 0, 2.03125}, {4, 0, 2.03125}, {4, 4, 2.03125}, {0, 4, 2.03125}};
     pts.insert(pts.end(), mid.begin(), mid.end());
     const auto inner = grid_points(40, 7);
     pts.insert(pts.end(), inner.begin(), inner.end());
@@ -106,7 +119,8 @@ struct State {
 };
 
 State state_of(const LiveCdt& live) {
-    State s{test::canonical(live.tets()), canonical_faces(live.faces()), live.plc().points.size(), {}};
+    State s{
+        test::canonical(live.tets()), canonical_faces(live.faces()), live.plc().points.size(), {}};
     for (const auto& e : plc_edges(live.plc())) {
         s.edges.push_back(e[0]);
         s.edges.push_back(e[1]);
@@ -195,7 +209,8 @@ Plc closed_polytope() {
         const double z = random.uniform(-1, 1);
         const double r = std::sqrt(1 - z * z);
         pts.push_back({std::round(64 * (2 + 4 * r * std::cos(t))) / 64,
-                       std::round(64 * (2 + 4 * r * std::sin(t))) / 64, std::round(64 * (2 + 4 * z)) / 64});
+                       std::round(64 * (2 + 4 * r * std::sin(t))) / 64,
+                       std::round(64 * (2 + 4 * z)) / 64});
     }
     const Plc hull = make_plc(pts, {});
     const auto tets = test::triangulate_in_input_order(hull.points).tets;
@@ -220,9 +235,16 @@ Plc closed_polytope() {
 }
 
 TEST(CdtVertexInsertion, OutsideTheHull) {
-    const std::vector<Point3> outside{{9, 2, 2},      {-4, -3, -1}, {2, 2, 9},     {100, 50, -30},
-                                      {7.5, 7.5, 2},  {2, -4.5, 1}, {-5, 2, 2.5},  {8, 8, 8},
-                                      {2.5, 2.5, -5}, {-9, -9, 9}};
+    const std::vector<Point3> outside{{9, 2, 2},
+                                      {-4, -3, -1},
+                                      {2, 2, 9},
+                                      {100, 50, -30},
+                                      {7.5, 7.5, 2},
+                                      {2, -4.5, 1},
+                                      {-5, 2, 2.5},
+                                      {8, 8, 8},
+                                      {2.5, 2.5, -5},
+                                      {-9, -9, 9}};
     // The hull triangles are polygons: the outer points see them but cannot dig through them.
     LiveCdt closed(closed_polytope(), CdtOptions{true});
     EXPECT_GE(insert_all(closed, outside), 7u);
@@ -268,8 +290,10 @@ TEST(CdtVertexInsertion, OnAPolygonEdgeAndASegment) {
     EXPECT_EQ(live.counters().on_plc_edge, 1u);
     const auto edges = plc_edges(live.plc());
     EXPECT_TRUE(std::binary_search(edges.begin(), edges.end(), std::array<std::uint32_t, 2>{a, m}));
-    EXPECT_TRUE(std::binary_search(edges.begin(), edges.end(), std::array<std::uint32_t, 2>{a + 1, m}));
-    EXPECT_FALSE(std::binary_search(edges.begin(), edges.end(), std::array<std::uint32_t, 2>{a, a + 1}));
+    EXPECT_TRUE(
+        std::binary_search(edges.begin(), edges.end(), std::array<std::uint32_t, 2>{a + 1, m}));
+    EXPECT_FALSE(
+        std::binary_search(edges.begin(), edges.end(), std::array<std::uint32_t, 2>{a, a + 1}));
     // A side of the middle square (also on the hull) and a side of the bottom square (a hull edge).
     const std::uint32_t s = insert_and_compare(live, {4, 1.75, 2.03125});
     insert_and_compare(live, {1.25, 0, 0});
@@ -288,11 +312,14 @@ TEST(CdtVertexInsertion, GridDegeneratePlc) {
     for (int x = 0; x <= 4; ++x) {
         for (int y = 0; y <= 4; ++y) {
             for (int z = 0; z <= 4; ++z) {
-                pts.push_back({static_cast<double>(x), static_cast<double>(y), static_cast<double>(z)});
+                pts.push_back(
+                    {static_cast<double>(x), static_cast<double>(y), static_cast<double>(z)});
             }
         }
     }
-    const auto id = [](int x, int y, int z) { return static_cast<std::uint32_t>(25 * x + 5 * y + z); };
+    const auto id = [](int x, int y, int z) {
+        return static_cast<std::uint32_t>(25 * x + 5 * y + z);
+    };
     // A square's loop lists every grid point on its sides (a point inside an edge is no PLC).
     const auto square = [&](int z) {
         std::vector<std::uint32_t> loop;
@@ -315,7 +342,8 @@ TEST(CdtVertexInsertion, GridDegeneratePlc) {
     Random random(3);
     std::size_t compared = 0;
     for (int i = 0; i < 25; ++i) {
-        const Point3 p{0.5 * static_cast<double>(random.below(9)), 0.5 * static_cast<double>(random.below(9)),
+        const Point3 p{0.5 * static_cast<double>(random.below(9)),
+                       0.5 * static_cast<double>(random.below(9)),
                        0.5 * static_cast<double>(random.below(9))};
         const State before = state_of(live);
         const CdtInsertion r = live.insert_vertex(p);
@@ -353,8 +381,9 @@ TEST(CdtVertexInsertion, ManyRandomPoints) {
     }
     EXPECT_EQ(live.counters().attempts, 400u);
     EXPECT_EQ(live.counters().inserted + refused, 400u);
-    EXPECT_EQ(refused, live.counters().refused_not_star_shaped + live.counters().refused_through_cavity +
-                           live.counters().refused_not_delaunay);
+    EXPECT_EQ(refused,
+              live.counters().refused_not_star_shaped + live.counters().refused_through_cavity +
+                  live.counters().refused_not_delaunay);
     EXPECT_GT(live.counters().inserted, 250u);
 }
 
@@ -480,7 +509,9 @@ TEST(CdtVertexInsertion, SequencesAgainstRebuild) {
     std::size_t compared = 0;
     std::size_t refused = 0;
     for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-        LiveCdt live(seed % 3 == 0 ? closed_polytope() : seed % 3 == 1 ? cube_with_middle_square() : closed_box(),
+        LiveCdt live(seed % 3 == 0   ? closed_polytope()
+                     : seed % 3 == 1 ? cube_with_middle_square()
+                                     : closed_box(),
                      CdtOptions{true});
         Random random(1000 + seed);
         for (int i = 0; i < 100; ++i) {
@@ -500,14 +531,16 @@ TEST(CdtVertexInsertion, SequencesAgainstRebuild) {
                 continue;
             }
             ++accepted;
-            ASSERT_TRUE(validate_cdt(live.plc(), live.tets()).ok()) << "seed " << seed << " point " << i;
+            ASSERT_TRUE(validate_cdt(live.plc(), live.tets()).ok())
+                << "seed " << seed << " point " << i;
             ASSERT_TRUE(check_complex(live.storage(), live.geometry()).empty());
             try {
                 const Cdt rebuilt = build_cdt(augmented, CdtOptions{false});
                 EXPECT_EQ(test::canonical(rebuilt.tets), test::canonical(live.tets()));
                 ++compared;
             } catch (const Error& e) {
-                EXPECT_NE(std::string(e.what()).find("not edge-protected"), std::string::npos) << e.what();
+                EXPECT_NE(std::string(e.what()).find("not edge-protected"), std::string::npos)
+                    << e.what();
             }
         }
     }

@@ -15,7 +15,7 @@
 namespace cavity::core {
 
 struct CdtOptions {
-    bool protect = false;              ///< split unprotected edges instead of refusing the PLC
+    bool protect = false;  ///< split unprotected edges instead of refusing the PLC
     std::size_t max_protection_points = 100000;
 };
 

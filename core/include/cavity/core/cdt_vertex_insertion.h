@@ -30,9 +30,9 @@ namespace cavity::core {
 
 enum class CdtInsertionStatus : std::uint8_t {
     kInserted,
-    kDuplicate,       ///< the point is a vertex already: nothing inserted
-    kNotStarShaped,   ///< diagnosis 1: "this vertex cannot be inserted"
-    kThroughCavity,   ///< diagnosis 2: "this vertex cannot be inserted"
+    kDuplicate,      ///< the point is a vertex already: nothing inserted
+    kNotStarShaped,  ///< diagnosis 1: "this vertex cannot be inserted"
+    kThroughCavity,  ///< diagnosis 2: "this vertex cannot be inserted"
     /// The cavity is star-shaped and nothing runs through it, yet a new face between two new
     /// tetrahedra is not locally Delaunay: a vertex that a polygon hid from the deleted tetrahedra
     /// lies in a new one's circumball (or the perturbation fixed a polygon's triangulation from
@@ -56,8 +56,8 @@ struct CdtInsertion {
 /// edges.
 class LiveCdt {
 public:
-    /// Builds the CDT of `plc` exactly as build_cdt does (construction is in cdt.cpp) and checks it.
-    /// \throws Error as build_cdt.
+    /// Builds the CDT of `plc` exactly as build_cdt does (construction is in cdt.cpp) and checks
+    /// it. \throws Error as build_cdt.
     LiveCdt(Plc plc, const CdtOptions& options);
 
     /// Inserts p as vertex plc().points.size() (its perturbation key), or reports why not; on a
@@ -66,10 +66,15 @@ public:
     CdtInsertion insert_vertex(const Point3& p);
 
     const Plc& plc() const { return plc_; }
+
     const ArrayStorage& storage() const { return storage_; }
+
     const Geometry& geometry() const { return geometry_; }
+
     const std::vector<CdtFace>& faces() const { return faces_; }
+
     const CdtInsertionCounters& counters() const { return counters_; }
+
     /// Indices of the vertices inserted so far, in order.
     const std::vector<std::uint32_t>& inserted() const { return inserted_; }
 
@@ -130,17 +135,24 @@ private:
     Cavity dig(const Carrier& carrier, VertexId u);
     bool conflicts(TetId t, VertexId u);
     Star make_star(const Cavity& cavity, VertexId u) const;
-    std::string retriangulate_polygons(Cavity& cavity, const Carrier& carrier, VertexId u,
+    std::string retriangulate_polygons(Cavity& cavity,
+                                       const Carrier& carrier,
+                                       VertexId u,
                                        std::vector<PolygonTriangle>& added) const;
     std::string through_cavity(const Cavity& cavity, const Carrier& carrier) const;
     std::string not_star_shaped(const Cavity& cavity, const Star& star) const;
     std::string not_delaunay(const Star& star, const std::vector<PolygonTriangle>& added) const;
-    void commit(const Cavity& cavity, const Star& star, const std::vector<PolygonTriangle>& added,
-                const Carrier& carrier, VertexId u);
+    void commit(const Cavity& cavity,
+                const Star& star,
+                const std::vector<PolygonTriangle>& added,
+                const Carrier& carrier,
+                VertexId u);
     void split_plc_edge(const PlcEdge& e, std::uint32_t m);
     void add_face(const Triangle& v, std::uint32_t facet);
     void remove_face(const Triangle& key);
+
     bool in_cavity(TetId t) const { return t < stamp_.size() && stamp_[t] == epoch_; }
+
     std::string name(VertexId v) const;
     std::string triangle_name(const Triangle& t) const;
 
@@ -156,7 +168,7 @@ private:
     std::set<PlcEdge> plc_edges_;                 ///< {min, max}
     std::vector<std::uint32_t> inserted_;
     CdtInsertionCounters counters_;
-    TetId hint_ = kNoTet;             ///< where the next walk starts
+    TetId hint_ = kNoTet;  ///< where the next walk starts
     std::uint64_t walk_state_ = 0x9E37'79B9'7F4A'7C15u;
     std::vector<std::uint32_t> stamp_;  ///< stamp_[t] == epoch_: t is in the current cavity
     std::uint32_t epoch_ = 0;
