@@ -69,8 +69,8 @@ void insert_points(core::LiveCdt& live, const CdtArgs& args) {
 void print_insertions(const core::Cdt& cdt, const CdtArgs& args) {
     const auto& c = cdt.insertion;
     std::printf(
-        "inserted %llu of %llu points from %s (%llu refused: %llu not star-shaped, %llu "
-        "through the cavity, %llu not Delaunay; %llu duplicates)\n",
+        "inserted %llu of %llu points from %s (%llu left out: %llu not star-shaped, %llu "
+        "through the cavity, %llu not Delaunay, %llu duplicates)\n",
         static_cast<unsigned long long>(c.inserted),
         static_cast<unsigned long long>(c.attempts),
         args.insert.c_str(),
@@ -81,12 +81,13 @@ void print_insertions(const core::Cdt& cdt, const CdtArgs& args) {
         static_cast<unsigned long long>(c.duplicates));
     std::printf(
         "insertion: %llu on polygons, %llu on PLC edges; tetrahedra deleted %llu, created "
-        "%llu; conflict tests %llu, walk steps %llu\n",
+        "%llu; conflict tests %llu, new-face tests %llu, walk steps %llu\n",
         static_cast<unsigned long long>(c.on_polygon),
         static_cast<unsigned long long>(c.on_plc_edge),
         static_cast<unsigned long long>(c.tets_deleted),
         static_cast<unsigned long long>(c.tets_created),
         static_cast<unsigned long long>(c.conflict_tests),
+        static_cast<unsigned long long>(c.face_tests),
         static_cast<unsigned long long>(c.walk_steps));
 }
 

@@ -394,8 +394,7 @@ std::string LiveCdt::not_star_shaped(const Cavity& cavity, const Star& star) con
 /// a CDT is not, and a new tetrahedron may take in a vertex that a polygon hid from the deleted
 /// ones (or the perturbation fixed a polygon's triangulation from its other side). Then the PLC
 /// with v has no CDT that keeps the rest, and v is refused like the chapter's two diagnoses.
-std::string LiveCdt::not_delaunay(const Star& star,
-                                  const std::vector<PolygonTriangle>& added) const {
+std::string LiveCdt::not_delaunay(const Star& star, const std::vector<PolygonTriangle>& added) {
     std::set<Triangle> polygon;
     for (const PolygonTriangle& t : added) {
         polygon.insert(sorted(t.v));
@@ -410,6 +409,7 @@ std::string LiveCdt::not_delaunay(const Star& star,
         if (polygon.count(sorted(face)) != 0) {
             continue;
         }
+        ++counters_.face_tests;
         if (geometry_.conflicts_solid(a, b[static_cast<std::size_t>(facet_of(h2))], nullptr)) {
             return "the new face " + triangle_name(face) +
                    " is not locally Delaunay (a vertex hidden from the cavity by a polygon lies "

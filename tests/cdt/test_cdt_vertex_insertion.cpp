@@ -179,6 +179,7 @@ TEST(CdtVertexInsertion, InteriorPointsMatchRebuild) {
     EXPECT_GT(live.counters().tets_deleted, 0u);
     EXPECT_GT(live.counters().tets_created, live.counters().tets_deleted);
     EXPECT_GE(live.counters().conflict_tests, live.counters().tets_deleted);
+    EXPECT_GT(live.counters().face_tests, 0u);
 }
 
 /// Inserts each point; an accepted one must match the rebuild, a refused one change nothing.

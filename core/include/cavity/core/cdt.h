@@ -34,6 +34,7 @@ struct CdtInsertionCounters {
     std::uint64_t refused_not_delaunay = 0;     ///< a new face not locally Delaunay (no CDT)
     std::uint64_t walk_steps = 0;               ///< tetrahedra visited by point location
     std::uint64_t conflict_tests = 0;           ///< perturbed insphere / ghost tests of the search
+    std::uint64_t face_tests = 0;               ///< perturbed insphere tests of new faces (check 3)
     std::uint64_t tets_deleted = 0;             ///< solid, by accepted insertions
     std::uint64_t tets_created = 0;
     std::uint64_t ghosts_deleted = 0;

@@ -141,7 +141,7 @@ private:
                                        std::vector<PolygonTriangle>& added) const;
     std::string through_cavity(const Cavity& cavity, const Carrier& carrier) const;
     std::string not_star_shaped(const Cavity& cavity, const Star& star) const;
-    std::string not_delaunay(const Star& star, const std::vector<PolygonTriangle>& added) const;
+    std::string not_delaunay(const Star& star, const std::vector<PolygonTriangle>& added);
     void commit(const Cavity& cavity,
                 const Star& star,
                 const std::vector<PolygonTriangle>& added,
