@@ -13,8 +13,8 @@ namespace {
 
 /// A live tetrahedron with vertices u and v found by a search across the facets of u's star from
 /// `start` (each tetrahedron counted), or kNoTet when uv is not an edge of the complex.
-TetId search_star(const ArrayStorage& storage, TetId start, VertexId u, VertexId v,
-                  std::uint64_t& steps) {
+TetId search_star(
+    const ArrayStorage& storage, TetId start, VertexId u, VertexId v, std::uint64_t& steps) {
     std::vector<TetId> queue{start};
     std::unordered_set<TetId> seen{start};
     for (std::size_t k = 0; k < queue.size(); ++k) {
@@ -43,8 +43,11 @@ TetId search_star(const ArrayStorage& storage, TetId start, VertexId u, VertexId
 /// v lies in t's closed cone at u, and since uv is an edge of the complex (no edge passes through
 /// a face or another vertex), v is a vertex of t. A walk that would revisit a tetrahedron or enter
 /// a ghost falls back to a search of the whole star. Steps are counted.
-TetId tet_with_edge(const ArrayStorage& storage, const Geometry& geometry, VertexId u,
-                    VertexId v, std::uint64_t& steps) {
+TetId tet_with_edge(const ArrayStorage& storage,
+                    const Geometry& geometry,
+                    VertexId u,
+                    VertexId v,
+                    std::uint64_t& steps) {
     const TetId start = storage.tet_at_vertex(u);
     if (start == kNoTet) {
         return kNoTet;
@@ -85,13 +88,13 @@ TetId tet_with_edge(const ArrayStorage& storage, const Geometry& geometry, Verte
 
 FacetGeometry::FacetGeometry(const Geometry& geometry, const Plc& plc, const PlcFacet& facet)
     : geometry_(geometry), plc_(plc), facet_(facet), plane_([&] {
-          const auto plane = ExactPlane::of_facet(plc, facet);
-          if (!plane) {
-              throw Error(located_message(plc.source, facet.line,
-                                          "the facet's corners are all collinear"));
-          }
-          return *plane;
-      }()) {
+        const auto plane = ExactPlane::of_facet(plc, facet);
+        if (!plane) {
+            throw Error(
+                located_message(plc.source, facet.line, "the facet's corners are all collinear"));
+        }
+        return *plane;
+    }()) {
     for (const auto& loop : facet.loops) {
         for (std::size_t i = 0; i < loop.size(); ++i) {
             const VertexId a = loop[i];
@@ -152,7 +155,7 @@ FacetGeometry::Contact FacetGeometry::contact(const TetVertices& t) {
         }
     }
     return count > 0 && face_in_region(std::span(on.data(), count)) ? Contact::kTouches
-                                                                     : Contact::kNone;
+                                                                    : Contact::kNone;
 }
 
 bool FacetGeometry::holds_triangle(const std::array<VertexId, 3>& g) {
@@ -203,7 +206,8 @@ PolygonRegion find_polygon_region(const ArrayStorage& storage, FacetGeometry& fa
         if (start == kNoTet) {
             const auto base = static_cast<VertexId>(plc.points.index_base);
             throw Error(located_message(
-                plc.source, facet.facet().line,
+                plc.source,
+                facet.facet().line,
                 "polygon side " + std::to_string(u + base) + "-" + std::to_string(v + base) +
                     " is not an edge of the triangulation (is the PLC edge-protected?)"));
         }
@@ -232,8 +236,8 @@ PolygonRegion find_polygon_region(const ArrayStorage& storage, FacetGeometry& fa
         vertices.insert(vertices.end(), w.begin(), w.end());
     }
     std::sort(vertices.begin(), vertices.end());
-    region.vertices = static_cast<std::uint64_t>(
-        std::unique(vertices.begin(), vertices.end()) - vertices.begin());
+    region.vertices = static_cast<std::uint64_t>(std::unique(vertices.begin(), vertices.end()) -
+                                                 vertices.begin());
     return region;
 }
 

@@ -32,7 +32,9 @@ public:
     FacetGeometry(const Geometry& geometry, const Plc& plc, const PlcFacet& facet);
 
     const Geometry& geometry() const { return geometry_; }
+
     const Plc& plc() const { return plc_; }
+
     const PlcFacet& facet() const { return facet_; }
 
     /// -1 left, +1 right, 0 on h.
@@ -91,13 +93,13 @@ struct PolygonRegion {
 };
 
 /// Steps 1-2. For every loop side (an edge of the complex), a walk through the star of one end
-/// toward the other finds a tetrahedron holding the side, and the rotary search around the side tests its ring for
-/// tetrahedra touching the polygon; a depth-first search across facets from each one found then
-/// tests the neighbours of every touching tetrahedron. The touching tetrahedra of each connected
-/// piece of the polygon are facet-connected (around any point of the piece they form the star of
-/// a face), and every piece is bounded by loop sides, so the searches meet every tetrahedron of R.
-/// Every side is searched, not one per loop: loops may share corners, so a piece need not have a
-/// whole loop on its boundary. Doesn't change the complex.
+/// toward the other finds a tetrahedron holding the side, and the rotary search around the side
+/// tests its ring for tetrahedra touching the polygon; a depth-first search across facets from each
+/// one found then tests the neighbours of every touching tetrahedron. The touching tetrahedra of
+/// each connected piece of the polygon are facet-connected (around any point of the piece they form
+/// the star of a face), and every piece is bounded by loop sides, so the searches meet every
+/// tetrahedron of R. Every side is searched, not one per loop: loops may share corners, so a piece
+/// need not have a whole loop on its boundary. Doesn't change the complex.
 PolygonRegion find_polygon_region(const ArrayStorage& storage, FacetGeometry& facet);
 
 }  // namespace cavity::core

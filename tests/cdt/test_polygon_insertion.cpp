@@ -1,8 +1,6 @@
 // FlipInsertPolygon (Cheng, Dey & Shewchuk §5.8): the region R found by the rotary and
 // depth-first searches against a brute-force scan, the degenerate 4-4 flip path, Proposition 5.5
 // per polygon, polygons already present, and facets with several loops.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <map>
@@ -10,6 +8,7 @@
 #include <set>
 
 #include <boost/multiprecision/cpp_int.hpp>
+#include <gtest/gtest.h>
 
 #include "cavity/core/cdt.h"
 #include "cavity/core/cdt_validate.h"
@@ -45,10 +44,11 @@ std::vector<Point3> cloud(std::size_t n, std::uint64_t seed, double lo = 0) {
     std::set<std::array<std::uint64_t, 3>> used;
     std::vector<Point3> pts;
     while (pts.size() < n) {
-        const std::array<std::uint64_t, 3> c{1 + random.below(63), 1 + random.below(63),
-                                             1 + random.below(63)};
+        const std::array<std::uint64_t, 3> c{
+            1 + random.below(63), 1 + random.below(63), 1 + random.below(63)};
         if (used.insert(c).second) {
-            pts.push_back({lo + static_cast<double>(c[0]) / 16, lo + static_cast<double>(c[1]) / 16,
+            pts.push_back({lo + static_cast<double>(c[0]) / 16,
+                           lo + static_cast<double>(c[1]) / 16,
                            lo + static_cast<double>(c[2]) / 16});
         }
     }
@@ -82,9 +82,13 @@ std::vector<Loops> hull_triangles(const std::vector<Quad>& tets) {
 
 // --- Brute force, independent of the library's exact plane code ----------------------------------
 
-QPoint exact(const Point3& p) { return {Q(p.x), Q(p.y), Q(p.z)}; }
+QPoint exact(const Point3& p) {
+    return {Q(p.x), Q(p.y), Q(p.z)};
+}
 
-QPoint minus(const QPoint& a, const QPoint& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+QPoint minus(const QPoint& a, const QPoint& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 
 struct QPlane {
     QPoint a;
@@ -107,14 +111,15 @@ QPlane plane_of(const Plc& plc, const PlcFacet& facet) {
         for (std::size_t j = i + 1; j < c.size(); ++j) {
             const QPoint p = minus(c[i], c[0]);
             const QPoint q = minus(c[j], c[0]);
-            const QPoint n{p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2],
-                           p[0] * q[1] - p[1] * q[0]};
+            const QPoint n{
+                p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
             if (n[0] != 0 || n[1] != 0 || n[2] != 0) {
                 std::size_t drop = 0;
                 for (std::size_t k = 1; k < 3; ++k) {
                     drop = abs(n[k]) > abs(n[drop]) ? k : drop;
                 }
-                return {c[0], n, drop == 0 ? 1u : 0u, drop == 2 ? 1u : 2u, {ids[0], ids[i], ids[j]}};
+                return {
+                    c[0], n, drop == 0 ? 1u : 0u, drop == 2 ? 1u : 2u, {ids[0], ids[i], ids[j]}};
             }
         }
     }
@@ -146,7 +151,9 @@ bool in_region(const Plc& plc, const PlcFacet& facet, const QPlane& h, const QPo
 /// R by a scan of every tetrahedron: those with vertices strictly on both sides of the plane whose
 /// section's centroid (the mean of the points where the left-right edges cross) is in the region.
 /// orient3d screens out the tetrahedra on one side; rationals decide the rest.
-std::set<Quad> brute_force_region(const Plc& plc, std::size_t facet, const std::vector<Quad>& tets) {
+std::set<Quad> brute_force_region(const Plc& plc,
+                                  std::size_t facet,
+                                  const std::vector<Quad>& tets) {
     const PlcFacet& f = plc.facets[facet];
     const QPlane h = plane_of(plc, f);
     const auto& p = plc.points.points;
@@ -164,7 +171,8 @@ std::set<Quad> brute_force_region(const Plc& plc, std::size_t facet, const std::
         bool pos = false;
         bool neg = false;
         for (auto v : t) {
-            const auto s = predicates::orient3d(p[spanning[0]], p[spanning[1]], p[spanning[2]], p[v]);
+            const auto s =
+                predicates::orient3d(p[spanning[0]], p[spanning[1]], p[spanning[2]], p[v]);
             pos = pos || s == predicates::Sign::kPos;
             neg = neg || s == predicates::Sign::kNeg;
         }
@@ -263,20 +271,49 @@ void expect_proposition_5_5(const PolygonInsertionCounters& counters) {
     EXPECT_EQ(events, counters.events_queued);
 }
 
-// --- Tests ----------------------------------------------------------------------------------------
+// --- Tests
+// ----------------------------------------------------------------------------------------
 
 /// PLCs on integer grid points (the hull triangles of a few points among a few more), found by a
 /// one-off search over random seeds for insertions that perform 4-4 flips: four of the flip's six
 /// vertices are coplanar, which grid points make common.
 TEST(PolygonInsertion, FourFourFlips) {
     const std::vector<std::pair<std::vector<Point3>, std::vector<Loops>>> plcs{
-        {{{1, 0, 1}, {0, 0, 0}, {0, 0, 1}, {0, 1, 2}, {2, 2, 1}, {0, 1, 0}, {2, 1, 0}, {2, 1, 2},
-          {2, 1, 1}, {1, 1, 2}},
-         {{{0, 1, 2}}, {{0, 1, 4}}, {{0, 2, 3}}, {{0, 3, 4}}, {{1, 2, 5}}, {{1, 4, 5}}, {{2, 3, 5}},
+        {{{1, 0, 1},
+          {0, 0, 0},
+          {0, 0, 1},
+          {0, 1, 2},
+          {2, 2, 1},
+          {0, 1, 0},
+          {2, 1, 0},
+          {2, 1, 2},
+          {2, 1, 1},
+          {1, 1, 2}},
+         {{{0, 1, 2}},
+          {{0, 1, 4}},
+          {{0, 2, 3}},
+          {{0, 3, 4}},
+          {{1, 2, 5}},
+          {{1, 4, 5}},
+          {{2, 3, 5}},
           {{3, 4, 5}}}},
-        {{{2, 1, 0}, {1, 0, 0}, {1, 1, 1}, {1, 1, 0}, {1, 0, 1}, {1, 2, 2}, {1, 1, 2}, {2, 0, 0},
-          {2, 1, 1}, {0, 2, 2}},
-         {{{0, 1, 3}}, {{0, 1, 4}}, {{0, 3, 5}}, {{0, 4, 5}}, {{1, 2, 3}}, {{1, 2, 4}}, {{2, 3, 5}},
+        {{{2, 1, 0},
+          {1, 0, 0},
+          {1, 1, 1},
+          {1, 1, 0},
+          {1, 0, 1},
+          {1, 2, 2},
+          {1, 1, 2},
+          {2, 0, 0},
+          {2, 1, 1},
+          {0, 2, 2}},
+         {{{0, 1, 3}},
+          {{0, 1, 4}},
+          {{0, 3, 5}},
+          {{0, 4, 5}},
+          {{1, 2, 3}},
+          {{1, 2, 4}},
+          {{2, 3, 5}},
           {{2, 4, 5}}}},
         {{{0, 0, 0}, {1, 1, 1}, {0, 2, 0}, {1, 0, 0}, {2, 1, 2}, {1, 2, 0}, {1, 0, 2}, {2, 1, 0}},
          {{{0, 1, 2}}, {{0, 1, 4}}, {{0, 2, 3}}, {{0, 3, 4}}, {{1, 2, 4}}, {{2, 3, 4}}}},
@@ -304,17 +341,24 @@ TEST(PolygonInsertion, CoarseGridCubes) {
     std::uint64_t four_four = 0;
     for (const auto& [spacing, count] : {std::pair{2, 40}, std::pair{2, 80}, std::pair{4, 100}}) {
         for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-            std::vector<Point3> pts{{0, 0, 0},       {4, 0, 0},       {4, 4, 0},
-                                    {0, 4, 0},       {0, 0, 4},       {4, 0, 4},
-                                    {4, 4, 4},       {0, 4, 4},       {0, 0, 2.03125},
-                                    {4, 0, 2.03125}, {4, 4, 2.03125}, {0, 4, 2.03125}};
+            std::vector<Point3> pts{{0, 0, 0},
+                                    {4, 0, 0},
+                                    {4, 4, 0},
+                                    {0, 4, 0},
+                                    {0, 0, 4},
+                                    {4, 0, 4},
+                                    {4, 4, 4},
+                                    {0, 4, 4},
+                                    {0, 0, 2.03125},
+                                    {4, 0, 2.03125},
+                                    {4, 4, 2.03125},
+                                    {0, 4, 2.03125}};
             Random random(seed);
             std::set<std::array<std::uint64_t, 3>> used;
             const auto cells = static_cast<std::uint64_t>(4 * spacing - 1);
             while (pts.size() < 12 + static_cast<std::size_t>(count)) {
-                const std::array<std::uint64_t, 3> c{1 + random.below(cells),
-                                                     1 + random.below(cells),
-                                                     1 + random.below(cells)};
+                const std::array<std::uint64_t, 3> c{
+                    1 + random.below(cells), 1 + random.below(cells), 1 + random.below(cells)};
                 if (used.insert(c).second) {
                     pts.push_back({static_cast<double>(c[0]) / spacing,
                                    static_cast<double>(c[1]) / spacing,
@@ -344,8 +388,8 @@ TEST(PolygonInsertion, RandomGridPlcs) {
         const auto on_segment = [&](const Point3& p, const Point3& a, const Point3& b) {
             const Point3 d{b.x - a.x, b.y - a.y, b.z - a.z};
             const Point3 e{p.x - a.x, p.y - a.y, p.z - a.z};
-            const bool collinear = d.y * e.z == d.z * e.y && d.z * e.x == d.x * e.z &&
-                                   d.x * e.y == d.y * e.x;
+            const bool collinear =
+                d.y * e.z == d.z * e.y && d.z * e.x == d.x * e.z && d.x * e.y == d.y * e.x;
             const double dot = d.x * e.x + d.y * e.y + d.z * e.z;
             return collinear && dot > 0 && dot < d.x * d.x + d.y * d.y + d.z * d.z;
         };
@@ -437,7 +481,9 @@ TEST(PolygonInsertion, PolygonsAlreadyPresent) {
     // A square through a cloud, inserted, then inserted again.
     auto square_pts = cloud(40, 6);
     const auto n = static_cast<std::uint32_t>(square_pts.size());
-    for (const auto& c : {Point3{0, 0, 2.03125}, Point3{4, 0, 2.03125}, Point3{4, 4, 2.03125},
+    for (const auto& c : {Point3{0, 0, 2.03125},
+                          Point3{4, 0, 2.03125},
+                          Point3{4, 4, 2.03125},
                           Point3{0, 4, 2.03125}}) {
         square_pts.push_back(c);
     }
@@ -457,18 +503,23 @@ TEST(PolygonInsertion, FacetsWithSeveralLoops) {
     const double z = 2.03125;
     std::vector<Point3> pts = cloud(60, 9);
     const auto n = static_cast<std::uint32_t>(pts.size());
-    const std::vector<Point3> corners{
-        // two separate squares
-        {0.25, 0.25, z}, {1.75, 0.25, z}, {1.75, 1.75, z}, {0.25, 1.75, z},
-        {2.25, 2.25, z}, {3.75, 2.25, z}, {3.75, 3.75, z}, {2.25, 3.75, z}};
+    const std::vector<Point3> corners{// two separate squares
+                                      {0.25, 0.25, z},
+                                      {1.75, 0.25, z},
+                                      {1.75, 1.75, z},
+                                      {0.25, 1.75, z},
+                                      {2.25, 2.25, z},
+                                      {3.75, 2.25, z},
+                                      {3.75, 3.75, z},
+                                      {2.25, 3.75, z}};
     pts.insert(pts.end(), corners.begin(), corners.end());
     Plc two = make_plc(pts, {{{n, n + 1, n + 2, n + 3}, {n + 4, n + 5, n + 6, n + 7}}});
     const Inserted separate = insert_checked(two);
     EXPECT_GT(separate.counters.per_polygon.at(0).region_tets, 0u);
 
     std::vector<Point3> holed = cloud(60, 10);
-    const std::vector<Point3> ring{{0, 0, z}, {4, 0, z}, {4, 4, z}, {0, 4, z},
-                                   {1, 1, z}, {3, 1, z}, {3, 3, z}, {1, 3, z}};
+    const std::vector<Point3> ring{
+        {0, 0, z}, {4, 0, z}, {4, 4, z}, {0, 4, z}, {1, 1, z}, {3, 1, z}, {3, 3, z}, {1, 3, z}};
     holed.insert(holed.end(), ring.begin(), ring.end());
     Plc hole = make_plc(holed, {{{n, n + 1, n + 2, n + 3}, {n + 4, n + 5, n + 6, n + 7}}});
     hole.facets[0].holes.push_back({2, 2, z});
@@ -482,8 +533,8 @@ TEST(PolygonInsertion, FacetsWithSeveralLoops) {
     EXPECT_GT(covered.counters.per_polygon[1].region_tets, 0u);
 
     std::vector<Point3> lens = cloud(60, 11);
-    const std::vector<Point3> outline{{0, 0, z},       {4, 0, z}, {4, 4, z}, {0, 4, z},
-                                      {3, 1, z},       {1, 3, z}};
+    const std::vector<Point3> outline{
+        {0, 0, z}, {4, 0, z}, {4, 4, z}, {0, 4, z}, {3, 1, z}, {1, 3, z}};
     lens.insert(lens.end(), outline.begin(), outline.end());
     // The inner loop starts at a corner strictly inside the outer one.
     Plc pieces = make_plc(lens, {{{n, n + 1, n + 2, n + 3}, {n + 4, n + 2, n + 5, n}}});
@@ -496,8 +547,8 @@ TEST(PolygonInsertion, FacetsWithSeveralLoops) {
 TEST(PolygonInsertion, SearchStaysLocal) {
     auto pts = cloud(3000, 12);
     const auto n = static_cast<std::uint32_t>(pts.size());
-    for (const auto& c : {Point3{1.5, 1.5, 2.03125}, Point3{2.25, 1.625, 2.03125},
-                          Point3{1.75, 2.375, 2.09375}}) {
+    for (const auto& c :
+         {Point3{1.5, 1.5, 2.03125}, Point3{2.25, 1.625, 2.03125}, Point3{1.75, 2.375, 2.09375}}) {
         pts.push_back(c);
     }
     Plc plc = make_plc(pts, {{{n, n + 1, n + 2}}});
@@ -505,14 +556,15 @@ TEST(PolygonInsertion, SearchStaysLocal) {
     const PolygonWork& w = inserted.counters.per_polygon.at(0);
     EXPECT_GT(w.region_tets, 0u);
     EXPECT_LT(10 * (w.rotary_steps + w.search_visited), inserted.scan);
-    std::printf("|R| = %llu, m = %llu: steps 1-2 looked at %llu tetrahedra (rotary %llu, "
-                "depth-first %llu); a scan tests %llu\n",
-                static_cast<unsigned long long>(w.region_tets),
-                static_cast<unsigned long long>(w.region_vertices),
-                static_cast<unsigned long long>(w.rotary_steps + w.search_visited),
-                static_cast<unsigned long long>(w.rotary_steps),
-                static_cast<unsigned long long>(w.search_visited),
-                static_cast<unsigned long long>(inserted.scan));
+    std::printf(
+        "|R| = %llu, m = %llu: steps 1-2 looked at %llu tetrahedra (rotary %llu, "
+        "depth-first %llu); a scan tests %llu\n",
+        static_cast<unsigned long long>(w.region_tets),
+        static_cast<unsigned long long>(w.region_vertices),
+        static_cast<unsigned long long>(w.rotary_steps + w.search_visited),
+        static_cast<unsigned long long>(w.rotary_steps),
+        static_cast<unsigned long long>(w.search_visited),
+        static_cast<unsigned long long>(inserted.scan));
 }
 
 }  // namespace
