@@ -13,6 +13,7 @@
 #include "cavity/core/cdt.h"
 #include "cavity/core/cdt_validate.h"
 #include "cavity/core/complex_from_tets.h"
+#include "cavity/core/error.h"
 #include "cavity/core/random.h"
 #include "cavity/core/triangulate.h"
 #include "cavity/predicates/orient3d.h"
@@ -540,6 +541,34 @@ TEST(PolygonInsertion, FacetsWithSeveralLoops) {
     Plc pieces = make_plc(lens, {{{n, n + 1, n + 2, n + 3}, {n + 4, n + 2, n + 5, n}}});
     pieces.facets[0].holes.push_back({2, 2, z});
     insert_checked(pieces);
+}
+
+/// A polygon side that is not an edge of the complex (the PLC is not edge-protected) is reported
+/// with its corners numbered as in the file, and nothing is flipped.
+TEST(PolygonInsertion, SideNotAnEdge) {
+    auto pts = cloud(40, 3);
+    const auto n = static_cast<std::uint32_t>(pts.size());
+    pts.push_back({0.5, 0.5, 1.0});
+    pts.push_back({3.5, 1.0, 2.0});
+    pts.push_back({1.0, 3.5, 3.0});
+    Plc plc = make_plc(pts, {{{n, n + 1, n + 2}}});
+    plc.points.index_base = 1;
+    ArrayStorage storage = complex_from_tets(delaunay(plc.points));
+    const Geometry geometry = geometry_by_index(plc.points);
+    const std::vector<Quad> before = solid_tets(storage);
+    ConstrainedFaces constrained;
+    PolygonInsertionCounters counters;
+    try {
+        insert_polygon(storage, geometry, plc, 0, constrained, counters);
+        FAIL() << "inserted a polygon whose sides are not all edges";
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("is not an edge of the triangulation"), std::string::npos)
+            << message;
+        EXPECT_NE(message.find(std::to_string(n + 1)), std::string::npos) << message;
+    }
+    EXPECT_EQ(solid_tets(storage), before);
+    EXPECT_TRUE(counters.per_polygon.empty());
 }
 
 /// Steps 1-2 look near the polygon only: a small triangle in a large cloud is found by visiting a
