@@ -39,9 +39,10 @@ std::vector<std::string> cdt_columns() {
     return {"points", "polygons", "protection_points", "vertices", "tets", "protect_s", "dt_s",
             "insert_s", "validate_s", "flips", "flips_23", "flips_32", "flips_14", "flips_41",
             "flips_22", "flips_44", "flips_refused", "certify_calls", "events_queued",
-            "events_stale", "events_held", "region_tets", "sum_m", "max_m", "rotary_steps", "search_visited", "search_per_region_tet",
-            "flips_per_n2", "events_per_n2_log_n", "polygon_records", "sum_m2", "flips_per_sum_m2",
-            "max_flips_per_m2", "polygons_at_or_over_m2", "max_events_per_m2_log_m", "valid", "cdt_problems"};
+            "events_stale", "events_held", "region_tets", "sum_m", "max_m", "rotary_steps",
+            "search_visited", "search_per_region_tet", "flips_per_n2", "events_per_n2_log_n",
+            "polygon_records", "sum_m2", "flips_per_sum_m2", "max_flips_per_m2",
+            "polygons_at_or_over_m2", "max_events_per_m2_log_m", "valid", "cdt_problems"};
 }
 
 std::vector<std::string> cdt_j_columns() {
@@ -120,7 +121,9 @@ RunOutput cdt(const Suite& suite, const RunSpec& run) {
     }
     // Without per-polygon records the per-polygon columns are unknown, never zero.
     const bool records = !c.per_polygon.empty();
-    const auto known = [records](const std::string& value) { return records ? value : std::string("-"); };
+    const auto known = [records](const std::string& value) {
+        return records ? value : std::string("-");
+    };
     out.values = {number(std::uint64_t{input_points}),
                   number(std::uint64_t{plc.facets.size()}),
                   number(std::uint64_t{protection.inserted.size()}),

@@ -169,7 +169,9 @@ RunOutput deletion(const Suite& suite, const TierSettings& tier, const RunSpec& 
                   number(per(static_cast<double>(total.tets_created))),
                   number(per(static_cast<double>(total.insphere_calls))),
                   number(per(static_cast<double>(total.apex_orient_tests))),
-                  number(degree_sq_sum > 0 ? static_cast<double>(total.apex_orient_tests) / degree_sq_sum : 0.0),
+                  number(degree_sq_sum > 0
+                             ? static_cast<double>(total.apex_orient_tests) / degree_sq_sum
+                             : 0.0),
                   equal ? "1" : "0",
                   hash};
     return out;

@@ -186,8 +186,9 @@ Plc terrain(std::size_t n, std::uint64_t seed, std::string source) {
             for (std::uint32_t i = 0; i + 1 < g; ++i) {
                 const std::uint32_t p = id(layer, i, j), q = id(layer, i + 1, j);
                 const std::uint32_t r = id(layer, i + 1, j + 1), s = id(layer, i, j + 1);
-                cells.push_back((i + j) % 2 == 0 ? std::array<Loop, 2>{Loop{p, q, r}, Loop{p, r, s}}
-                                                 : std::array<Loop, 2>{Loop{p, q, s}, Loop{q, r, s}});
+                using Pair = std::array<Loop, 2>;
+                cells.push_back((i + j) % 2 == 0 ? Pair{Loop{p, q, r}, Loop{p, r, s}}
+                                                 : Pair{Loop{p, q, s}, Loop{q, r, s}});
             }
         }
     }
@@ -284,7 +285,8 @@ core::Plc make_plc_family(std::string_view family, std::size_t n, std::uint64_t 
         throw core::Error("PLC family '" + std::string(family) + "': n = " + std::to_string(n) +
                           " is too small (at least 8 points)");
     }
-    std::string source = std::string(family) + " n=" + std::to_string(n) + " seed=" + std::to_string(seed);
+    std::string source =
+        std::string(family) + " n=" + std::to_string(n) + " seed=" + std::to_string(seed);
     if (family == "hull-faces") {
         return hull_faces(n, seed, std::move(source));
     }

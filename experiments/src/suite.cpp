@@ -95,8 +95,9 @@ private:
 };
 
 SuiteKind parse_kind(const LineReader& reader, const std::string& word) {
-    constexpr SuiteKind kKinds[] = {SuiteKind::kRuns,     SuiteKind::kJTets,    SuiteKind::kCreation,
-                                    SuiteKind::kDegenerate, SuiteKind::kPeers,  SuiteKind::kGiftWrap,
+    constexpr SuiteKind kKinds[] = {SuiteKind::kRuns,     SuiteKind::kJTets,
+                                    SuiteKind::kCreation, SuiteKind::kDegenerate,
+                                    SuiteKind::kPeers,    SuiteKind::kGiftWrap,
                                     SuiteKind::kDeletion, SuiteKind::kCdt};
     for (SuiteKind kind : kKinds) {
         if (word == suite_kind_name(kind)) {
@@ -235,7 +236,8 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
             }
             (key == "orders.quick" ? suite.quick : suite.full).orders = r;
         } else if (key == "deletions.quick" || key == "deletions.full") {
-            (key == "deletions.quick" ? suite.quick : suite.full).deletions = reader.integer(single());
+            const std::uint64_t k = reader.integer(single());
+            (key == "deletions.quick" ? suite.quick : suite.full).deletions = k;
         } else if (key == "validate") {
             const std::string& w = single();
             if (w != "yes" && w != "no" && w.find_first_not_of("0123456789") != std::string::npos) {
