@@ -8,6 +8,7 @@
 #include "cavity/core/cdt_vertex_insertion.h"
 #include "cavity/core/complex_from_tets.h"
 #include "cavity/core/error.h"
+#include "cavity/core/plc_validity.h"
 #include "cavity/core/triangulate.h"
 
 namespace cavity::core {
@@ -49,6 +50,7 @@ std::vector<std::array<std::uint32_t, 4>> protected_delaunay(const Plc& plc) {
                 " edge(s) are not Delaunay edges of its vertices:" + edge_list(plc, missing) +
                 " (the flip-based CDT needs edge protection; --protect splits them)"));
     }
+    require_valid_plc(plc, dt.tets);
     return std::move(dt.tets);
 }
 

@@ -4,8 +4,11 @@ namespace cavity::core {
 
 std::string located_message(const std::string& file, std::optional<std::size_t> line,
                             const std::string& what) {
+    if (file.empty()) {
+        return what;
+    }
     std::string message = file;
-    if (line) {
+    if (line && *line != 0) {
         message += ':';
         message += std::to_string(*line);
     }

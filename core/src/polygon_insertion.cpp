@@ -79,8 +79,7 @@ public:
           geometry_(geometry),
           plc_(plc),
           facet_(geometry, plc, plc.facets[facet]),
-          name_("facet " + std::to_string(facet + static_cast<std::size_t>(plc.points.index_base)) +
-                " (line " + std::to_string(plc.facets[facet].line) + ")"),
+          name_(facet_name(plc, facet)),
           constrained_(constrained),
           counters_(counters) {
         work_.facet = static_cast<std::uint32_t>(facet);

@@ -15,7 +15,9 @@ public:
     explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
-/// Builds "FILE:LINE: what" (or "FILE: what" without a line), the form every parse error takes.
+/// Builds "FILE:LINE: what", the form every parse error takes. Lines count from 1, so a line of 0
+/// (data not read from a file, e.g. a PLC built in code) is left out like a missing one, and so is
+/// an empty file name: "FILE: what" or "what".
 std::string located_message(const std::string& file, std::optional<std::size_t> line,
                             const std::string& what);
 
