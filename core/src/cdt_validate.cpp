@@ -31,6 +31,54 @@ private:
     CdtValidation& out_;
 };
 
+/// An axis-aligned box in doubles: min and max are exact, so a box test never drops a simplex
+/// that meets a facet; it only spares exact tests of those that cannot.
+struct Box {
+    std::array<double, 3> lo{};
+    std::array<double, 3> hi{};
+
+    template <class Ids>
+    static Box of(const std::vector<Point3>& pts, const Ids& ids) {
+        Box b;
+        const Point3& p0 = pts[ids[0]];
+        b.lo = b.hi = {p0.x, p0.y, p0.z};
+        for (auto id : ids) {
+            const Point3& p = pts[id];
+            const std::array<double, 3> c{p.x, p.y, p.z};
+            for (std::size_t k = 0; k < 3; ++k) {
+                b.lo[k] = std::min(b.lo[k], c[k]);
+                b.hi[k] = std::max(b.hi[k], c[k]);
+            }
+        }
+        return b;
+    }
+
+    bool meets(const Box& o) const {
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (hi[k] < o.lo[k] || o.hi[k] < lo[k]) {
+                return false;
+            }
+        }
+        return true;
+    }
+};
+
+Box facet_box(const Plc& plc, const PlcFacet& facet) {
+    std::vector<std::uint32_t> corners;
+    for (const auto& loop : facet.loops) {
+        corners.insert(corners.end(), loop.begin(), loop.end());
+    }
+    return Box::of(plc.points.points, corners);
+}
+
+/// The mesh simplices with their boxes, computed once for every facet's tests.
+struct BoxedMesh {
+    std::span<const std::array<std::uint32_t, 4>> tets;
+    std::vector<Box> tet_boxes;
+    std::vector<Triangle> triangles;
+    std::vector<Box> triangle_boxes;
+};
+
 std::string tet_name(const std::array<std::uint32_t, 4>& t, int base) {
     std::string s = "tetrahedron";
     for (std::uint32_t v : t) {
@@ -43,8 +91,7 @@ std::string tet_name(const std::array<std::uint32_t, 4>& t, int base) {
 /// tetrahedron crosses it and that they cover its area.
 std::vector<Triangle> polygon_faces(const Plc& plc,
                                     std::size_t index,
-                                    std::span<const std::array<std::uint32_t, 4>> tets,
-                                    const std::set<Triangle>& triangles,
+                                    const BoxedMesh& mesh,
                                     Report& report) {
     const PlcFacet& facet = plc.facets[index];
     const std::string name = facet_name(plc, index);
@@ -55,7 +102,12 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         return faces;
     }
     const auto& pts = plc.points.points;
-    for (const auto& t : tets) {
+    const Box box = facet_box(plc, facet);
+    for (std::size_t k = 0; k < mesh.tets.size(); ++k) {
+        if (!box.meets(mesh.tet_boxes[k])) {
+            continue;
+        }
+        const auto& t = mesh.tets[k];
         std::array<int, 4> s{};
         for (std::size_t i = 0; i < 4; ++i) {
             s[i] = static_cast<int>(plane->side(pts[t[i]]));
@@ -74,7 +126,11 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         }
     }
     Rational covered = 0;
-    for (const Triangle& g : triangles) {
+    for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+        const Triangle& g = mesh.triangles[k];
+        if (!box.meets(mesh.triangle_boxes[k])) {
+            continue;
+        }
         if (plane->side(pts[g[0]]) != Sign::kZero || plane->side(pts[g[1]]) != Sign::kZero ||
             plane->side(pts[g[2]]) != Sign::kZero) {
             continue;
@@ -164,9 +220,16 @@ CdtValidation validate_cdt(const Plc& plc, std::span<const std::array<std::uint3
             triangles.insert(s);
         }
     }
+    BoxedMesh mesh{tets, {}, {triangles.begin(), triangles.end()}, {}};
+    for (const auto& t : tets) {
+        mesh.tet_boxes.push_back(Box::of(plc.points.points, t));
+    }
+    for (const Triangle& g : mesh.triangles) {
+        mesh.triangle_boxes.push_back(Box::of(plc.points.points, g));
+    }
     std::set<Triangle> constrained;
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
-        for (const Triangle& g : polygon_faces(plc, f, tets, triangles, report)) {
+        for (const Triangle& g : polygon_faces(plc, f, mesh, report)) {
             constrained.insert(g);
         }
     }
