@@ -123,7 +123,8 @@ void run_cdt(const CdtArgs& args) {
         cdt.faces.size());
     std::printf(
         "flips 2-3 %llu, 3-2 %llu, 4-4 %llu; events queued %llu, stale %llu, held back %llu; "
-        "region tetrahedra %llu, largest region %llu vertices\n",
+        "region tetrahedra %llu, largest region %llu vertices; found by rotary searches over "
+        "%llu and depth-first searches over %llu tetrahedra\n",
         static_cast<unsigned long long>(c.flips.flip_count(core::FlipKind::k23)),
         static_cast<unsigned long long>(c.flips.flip_count(core::FlipKind::k32)),
         static_cast<unsigned long long>(c.flips.flip_count(core::FlipKind::k44)),
@@ -131,7 +132,9 @@ void run_cdt(const CdtArgs& args) {
         static_cast<unsigned long long>(c.events_stale),
         static_cast<unsigned long long>(c.events_held),
         static_cast<unsigned long long>(c.region_tets),
-        static_cast<unsigned long long>(c.max_region_vertices));
+        static_cast<unsigned long long>(c.max_region_vertices),
+        static_cast<unsigned long long>(c.rotary_steps),
+        static_cast<unsigned long long>(c.search_visited));
     if (!args.insert.empty()) {
         print_insertions(cdt, args);
     }
@@ -157,8 +160,9 @@ void add_cdt_command(CLI::App& app) {
         ->required();
     cmd->add_flag("--protect",
                   args->protect,
-                  "split PLC edges that are not Delaunay (at exact midpoints) until it is "
-                  "edge-protected");
+                  "split PLC edges that are not Delaunay until it is edge-protected, at points lying "
+                  "exactly on them (double coordinates, near the middle; an edge with no such point "
+                  "is refused by name)");
     cmd->add_option("--insert",
                     args->insert,
                     "after the polygons, insert these points (.node, .xyz, .ply) in file order "
