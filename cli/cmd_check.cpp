@@ -25,6 +25,23 @@ struct CheckArgs {
 /// --poly: the mesh must be the constrained Delaunay tetrahedralization of the PLC.
 void run_cdt_check(const CheckArgs& args) {
     const core::Plc plc = core::read_poly(args.poly);
+    // The PLC carries the points; the point file must list the same ones, so that a mesh is
+    // never checked against points other than those it was written with.
+    const core::PointSet points = core::read_points(args.points, false);
+    const auto base = static_cast<std::size_t>(plc.points.index_base);
+    if (points.size() != plc.points.size()) {
+        throw core::Error(args.points + ": " + std::to_string(points.size()) + " points, but " +
+                          args.poly + " has " + std::to_string(plc.points.size()));
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const auto& a = points.points[i];
+        const auto& b = plc.points.points[i];
+        if (a.x != b.x || a.y != b.y || a.z != b.z) {
+            throw core::Error(args.points + ": point " + std::to_string(i + base) +
+                              " differs from point " + std::to_string(i + base) + " of " +
+                              args.poly);
+        }
+    }
     const auto tets = core::read_ele(args.mesh, plc.points.index_base);
     const core::CdtValidation report = core::validate_cdt(plc, tets);
     if (!report.ok()) {
@@ -83,8 +100,8 @@ void add_check_command(CLI::App& app) {
     cmd->add_option("mesh", args->mesh, "the tetrahedra (.ele), numbered like the points")->required();
     cmd->add_flag("--weighted", args->weighted, "weighted Delaunay (weights from the point file)");
     cmd->add_option("--poly", args->poly,
-                    "check a constrained Delaunay tetrahedralization of this PLC (TetGen .poly; "
-                    "the points are read from it)");
+                    "check a constrained Delaunay tetrahedralization of this PLC (TetGen .poly); "
+                    "the point file must list the same points as the PLC");
     cmd->add_flag("--quiet", args->quiet, "print only problems");
     cmd->callback([args] { run_check(*args); });
 }

@@ -57,22 +57,25 @@ Triangulation delete_vertices(const PointSet& points,
                               const Triangulation& triangulation,
                               std::span<const std::uint32_t> ids,
                               RetriangulationCounters* counters) {
+    // Messages number points as the input file does.
+    const auto numbered = [&](std::uint32_t id) {
+        return std::to_string(std::uint64_t{id} + static_cast<std::uint64_t>(points.index_base));
+    };
     std::vector<bool> gone(points.size(), false);
     for (std::uint32_t id : ids) {
         if (id >= points.size()) {
-            throw Error("cannot delete point " + std::to_string(id) + ": there are only " +
+            throw Error("cannot delete point " + numbered(id) + ": there are only " +
                         std::to_string(points.size()) + " points");
         }
         if (gone[id]) {
-            throw Error("point " + std::to_string(id) + " is listed twice for deletion");
+            throw Error("point " + numbered(id) + " is listed twice for deletion");
         }
         gone[id] = true;
     }
     Triangulation out;
     for (const auto& d : triangulation.duplicates) {
         if (!gone[d[0]] && gone[d[1]]) {
-            throw Error("cannot delete point " + std::to_string(d[1]) + ": point " +
-                        std::to_string(d[0]) +
+            throw Error("cannot delete point " + numbered(d[1]) + ": point " + numbered(d[0]) +
                         " repeats it and is kept (delete the repeats too, or keep both)");
         }
         if (!gone[d[0]]) {

@@ -45,8 +45,9 @@ struct CdtInsertionCounters {
 };
 
 struct Cdt {
-    Plc plc;  ///< the input, with the protecting points appended (indices from plc.points.size()),
-              ///< then the inserted vertices, its edges split where they lie on them
+    Plc plc;  ///< the input PLC, then the protecting points appended after the input's points
+              ///< (their indices start at the input's point count), then the inserted vertices;
+              ///< its edges split where those points lie on them
     std::vector<std::array<std::uint32_t, 4>> tets;  ///< 0-based, positively oriented
     std::vector<CdtFace> faces;                      ///< the polygons' triangles, with markers
     Protection protection;
@@ -55,9 +56,11 @@ struct Cdt {
     CdtInsertionCounters insertion;
 };
 
-/// \throws Error when the PLC is not edge-protected and options.protect is off (naming the
-/// unprotected edges), when protection fails, when polygon insertion fails, or when the result does
-/// not pass validate_cdt (the message lists the problems).
+/// \throws Error when two points coincide, when the PLC is not edge-protected and options.protect
+/// is off (naming the unprotected edges), when it is not a valid PLC (plc_validity.h: edges
+/// through polygons, overlapping facets, crossing loops), when protection fails, when polygon
+/// insertion fails, or when the result does not pass validate_cdt (the message lists the
+/// problems).
 Cdt build_cdt(Plc plc, const CdtOptions& options);
 
 }  // namespace cavity::core

@@ -16,7 +16,8 @@
 /// in conflict with the new vertex v (perturbed circumball, or outer halfspace for a ghost) that a
 /// depth-first search reaches without crossing a polygon, except a polygon v lies on. Even when
 /// the PLC has a CDT, the PLC with v added may have none, and the chapter's two symptoms are then
-/// checked before anything changes:
+/// checked before anything changes (the second first: a polygon through the cavity breaks
+/// star-shapedness too, and naming it says more, so a point failing both is kThroughCavity):
 ///  1. the cavity is not star-shaped from v: some new tetrahedron (v and a cavity face) is not
 ///     positively oriented, or a new hull triangle has a neighbour in front of it;
 ///  2. a polygon, a PLC edge or a vertex lies inside the cavity: a triangle of a polygon that v

@@ -14,8 +14,10 @@ namespace cavity::core {
 
 /// The array storage of a triangulation given as solid tetrahedra (positively oriented; vertex id =
 /// the given index), with a ghost tetrahedron over every boundary triangle and every facet glued:
-/// the live form that flips and vertex deletion work on. \throws Error when a triangle has more
-/// than two tetrahedra, or two on the same side.
+/// the live form that flips and vertex deletion work on. Two tetrahedra on the same side of a
+/// triangle (an inverted one, say) are glued all the same, so that check_complex can name the
+/// culprit. \throws Error when a triangle has more than two tetrahedra, when a hull edge has more
+/// than two hull triangles, or when the boundary is not closed.
 ArrayStorage complex_from_tets(std::span<const std::array<std::uint32_t, 4>> tets);
 
 /// The live solid tetrahedra, in slot order.

@@ -17,6 +17,7 @@ struct EdgeRing {
     std::vector<VertexId> ring;
 };
 
+/// \throws Error when the ring does not close (a complex without ghosts, or a corrupt one).
 EdgeRing edge_ring(const ArrayStorage& storage, TetId t, int i, int j);
 
 /// The live tetrahedra with vertex v (solid and ghost), found by a search across the facets that
