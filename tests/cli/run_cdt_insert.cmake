@@ -36,3 +36,9 @@ execute_process(COMMAND "${CAVITY}" check "${PREFIX}.node" "${PREFIX}.ele" --pol
 if(NOT status EQUAL 0 OR NOT out MATCHES "valid: constrained Delaunay")
   message(FATAL_ERROR "cavity check --poly ${PREFIX}.poly failed (${status}):\n${out}${err}")
 endif()
+# The same mesh against other points (the inserted points alone) is refused.
+execute_process(COMMAND "${CAVITY}" check "${POINTS}" "${PREFIX}.ele" --poly "${PREFIX}.poly"
+                OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
+if(status EQUAL 0 OR NOT err MATCHES "points, but .*\\.poly has")
+  message(FATAL_ERROR "check --poly accepted a point file unlike the PLC (${status}):\n${out}${err}")
+endif()
