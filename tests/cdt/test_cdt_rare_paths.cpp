@@ -5,7 +5,9 @@
 //    face through u locally Delaunay) it cannot cycle (Edelsbrunner's acyclicity theorem), but in
 //    an arbitrary triangulation it can, and then step 1 falls back to searching the whole star.
 //    A pyramid whose base is a "pinwheel" (Devillers, Pion & Teillaud, Walking in a
-//    triangulation) makes the walk cycle.
+//    triangulation) makes the walk cycle. In build_cdt, only polygons inserted earlier through u
+//    make u's star irregular; a search over pinwheels of polygon fins found no cycle there, so
+//    the complex is built by hand and handed to polygon_region.
 // 2. cdt_vertex_insertion.cpp: the refusal of a vertex all of whose tetrahedra conflict with the
 //    new point. It is out of reach (see the comment on the sweep below); the sweep guards the
 //    argument.
@@ -19,7 +21,6 @@
 
 #include "cavity/core/cdt_vertex_insertion.h"
 #include "cavity/core/complex_from_tets.h"
-#include "cavity/core/error.h"
 #include "cavity/core/polygon_insertion.h"
 #include "cavity/core/random.h"
 #include "cavity/predicates/orient3d.h"
