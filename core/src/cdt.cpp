@@ -1,7 +1,6 @@
 #include "cavity/core/cdt.h"
 
 #include <algorithm>
-#include <numeric>
 #include <string>
 
 #include "cavity/core/cdt_validate.h"
@@ -9,7 +8,6 @@
 #include "cavity/core/complex_from_tets.h"
 #include "cavity/core/error.h"
 #include "cavity/core/plc_validity.h"
-#include "cavity/core/triangulate.h"
 
 namespace cavity::core {
 
@@ -30,18 +28,8 @@ std::string edge_list(const Plc& plc, const std::vector<Edge>& edges) {
 /// The Delaunay triangulation of the PLC's points, refused when two coincide or a PLC edge is
 /// missing from it (the flip-based construction needs edge protection).
 std::vector<std::array<std::uint32_t, 4>> protected_delaunay(const Plc& plc) {
-    std::vector<std::uint32_t> sequence(plc.points.size());
-    std::iota(sequence.begin(), sequence.end(), 0u);
-    Triangulation dt = triangulate(plc.points, sequence, TriangulateOptions{});
-    if (!dt.duplicates.empty()) {
-        const auto& d = dt.duplicates.front();
-        throw Error(located_message(plc.source,
-                                    std::nullopt,
-                                    "points " + std::to_string(d[0] + plc.points.index_base) +
-                                        " and " + std::to_string(d[1] + plc.points.index_base) +
-                                        " coincide"));
-    }
-    const std::vector<Edge> missing = unprotected_edges(plc, dt.tets);
+    std::vector<std::array<std::uint32_t, 4>> tets = plc_delaunay(plc);
+    const std::vector<Edge> missing = unprotected_edges(plc, tets);
     if (!missing.empty()) {
         throw Error(located_message(
             plc.source,
@@ -50,8 +38,8 @@ std::vector<std::array<std::uint32_t, 4>> protected_delaunay(const Plc& plc) {
                 " edge(s) are not Delaunay edges of its vertices:" + edge_list(plc, missing) +
                 " (the flip-based CDT needs edge protection; --protect splits them)"));
     }
-    require_valid_plc(plc, dt.tets);
-    return std::move(dt.tets);
+    require_valid_plc(plc, tets);
+    return tets;
 }
 
 }  // namespace

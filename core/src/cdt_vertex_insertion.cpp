@@ -420,23 +420,7 @@ std::string LiveCdt::not_delaunay(const Star& star, const std::vector<PolygonTri
 }
 
 void LiveCdt::split_plc_edge(const PlcEdge& e, std::uint32_t m) {
-    for (auto& s : plc_.segments) {
-        if (sorted_edge(s[0], s[1]) == e) {
-            const std::uint32_t other = s[1];
-            s[1] = m;
-            plc_.segments.push_back({m, other});
-        }
-    }
-    for (auto& facet : plc_.facets) {
-        for (auto& loop : facet.loops) {
-            for (std::size_t i = 0; i < loop.size(); ++i) {
-                if (sorted_edge(loop[i], loop[(i + 1) % loop.size()]) == e) {
-                    loop.insert(loop.begin() + static_cast<std::ptrdiff_t>(i + 1), m);
-                    ++i;
-                }
-            }
-        }
-    }
+    core::split_plc_edge(plc_, e, m);
     plc_edges_.erase(e);
     plc_edges_.insert(sorted_edge(e[0], m));
     plc_edges_.insert(sorted_edge(m, e[1]));

@@ -10,9 +10,7 @@
 
 namespace cavity::core {
 
-namespace {
-
-std::vector<std::array<std::uint32_t, 4>> delaunay_of(const Plc& plc) {
+std::vector<std::array<std::uint32_t, 4>> plc_delaunay(const Plc& plc) {
     std::vector<std::uint32_t> sequence(plc.points.size());
     std::iota(sequence.begin(), sequence.end(), 0u);
     Triangulation dt = triangulate(plc.points, sequence, TriangulateOptions{});
@@ -27,7 +25,7 @@ std::vector<std::array<std::uint32_t, 4>> delaunay_of(const Plc& plc) {
     return std::move(dt.tets);
 }
 
-void split_edge(Plc& plc, const Edge& e, std::uint32_t m) {
+void split_plc_edge(Plc& plc, const Edge& e, std::uint32_t m) {
     for (auto& s : plc.segments) {
         if (std::min(s[0], s[1]) == e[0] && std::max(s[0], s[1]) == e[1]) {
             const std::uint32_t other = s[1];
@@ -48,8 +46,6 @@ void split_edge(Plc& plc, const Edge& e, std::uint32_t m) {
         }
     }
 }
-
-}  // namespace
 
 std::vector<Edge> unprotected_edges(const Plc& plc,
                                     std::span<const std::array<std::uint32_t, 4>> tets) {
@@ -73,7 +69,7 @@ std::vector<Edge> unprotected_edges(const Plc& plc,
 }
 
 std::vector<Edge> unprotected_edges(const Plc& plc) {
-    return unprotected_edges(plc, delaunay_of(plc));
+    return unprotected_edges(plc, plc_delaunay(plc));
 }
 
 Protection protect_edges(Plc& plc, std::size_t max_points) {
@@ -114,7 +110,7 @@ Protection protect_edges(Plc& plc, std::size_t max_points) {
             const auto id = static_cast<std::uint32_t>(plc.points.size());
             plc.points.points.push_back(*m);
             result.inserted.push_back(id);
-            split_edge(plc, e, id);
+            split_plc_edge(plc, e, id);
         }
     }
 }

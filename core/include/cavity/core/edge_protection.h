@@ -21,6 +21,15 @@ using Edge = std::array<std::uint32_t, 2>;
 std::vector<Edge> unprotected_edges(const Plc& plc,
                                     std::span<const std::array<std::uint32_t, 4>> tets);
 
+/// The Delaunay triangulation of the PLC's points (0-based indices, the perturbation keyed on
+/// them). \throws Error when two points coincide (naming them as the file numbers them) or the
+/// points have no 3D triangulation.
+std::vector<std::array<std::uint32_t, 4>> plc_delaunay(const Plc& plc);
+
+/// Splits PLC edge e (as {min, max}) at point m, which lies on it: in the explicit segments and in
+/// every loop that has e as a side.
+void split_plc_edge(Plc& plc, const Edge& e, std::uint32_t m);
+
 /// The PLC edges that are not edges of the Delaunay triangulation of its points.
 /// \throws Error when the points have no 3D triangulation or two points coincide.
 std::vector<Edge> unprotected_edges(const Plc& plc);
