@@ -9,30 +9,20 @@
 
 #include "cavity/core/cdt.h"
 #include "cavity/core/cdt_validate.h"
+#include "plc_builders.h"
 #include "cavity/core/error.h"
-#include "cavity/core/random.h"
 #include "cavity/core/triangulate.h"
 
 namespace cavity::core {
 namespace {
 
+using test::dyadic_grid_points;
+using test::make_plc;
+
 std::filesystem::path write_temp(const std::string& name, const std::string& text) {
     const auto path = std::filesystem::temp_directory_path() / ("cavity_cdt_" + name);
     std::ofstream(path) << text;
     return path;
-}
-
-Plc make_plc(std::vector<Point3> points, std::vector<std::vector<std::vector<std::uint32_t>>> facets) {
-    Plc plc;
-    plc.source = "test";
-    plc.points.points = std::move(points);
-    for (auto& loops : facets) {
-        PlcFacet f;
-        f.loops = std::move(loops);
-        f.marker = static_cast<int>(plc.facets.size()) + 1;
-        plc.facets.push_back(std::move(f));
-    }
-    return plc;
 }
 
 /// Builds the CDT, and checks it again with the validator from outside.
@@ -89,23 +79,11 @@ std::vector<Point3> box_corners(double x, double y, double z0, double z1) {
     return {{0, 0, z0}, {x, 0, z0}, {x, y, z0}, {0, y, z0}, {0, 0, z1}, {x, 0, z1}, {x, y, z1}, {0, y, z1}};
 }
 
-/// Points of a jittered binary grid inside (0, 4)^3: dyadic, so midpoints stay exact.
-std::vector<Point3> interior_points(std::size_t n, std::uint64_t seed) {
-    Random random(seed);
-    std::vector<Point3> pts;
-    for (std::size_t i = 0; i < n; ++i) {
-        pts.push_back({static_cast<double>(1 + random.below(63)) / 16,
-                       static_cast<double>(1 + random.below(63)) / 16,
-                       static_cast<double>(1 + random.below(63)) / 16});
-    }
-    return pts;
-}
-
 TEST(Cdt, CubeWithInteriorPointsAndMiddleSquare) {
     auto pts = box_corners(4, 4, 0, 4);
     const std::vector<Point3> mid{{0, 0, 2.03125}, {4, 0, 2.03125}, {4, 4, 2.03125}, {0, 4, 2.03125}};
     pts.insert(pts.end(), mid.begin(), mid.end());
-    const auto inner = interior_points(40, 7);
+    const auto inner = dyadic_grid_points(40, 7);
     pts.insert(pts.end(), inner.begin(), inner.end());
     const Plc plc = make_plc(pts, {{{0, 1, 2, 3}}, {{4, 5, 6, 7}}, {{8, 9, 10, 11}}});
     const Cdt cdt = checked_cdt(plc, true);
@@ -123,7 +101,7 @@ TEST(Cdt, BoxWithAHole) {
     const std::vector<Point3> ring{{0, 0, 1.96875}, {4, 0, 1.96875}, {4, 4, 1.96875}, {0, 4, 1.96875},
                                    {1, 1, 1.96875}, {3, 1, 1.96875}, {3, 3, 1.96875}, {1, 3, 1.96875}};
     pts.insert(pts.end(), ring.begin(), ring.end());
-    const auto inner = interior_points(30, 11);
+    const auto inner = dyadic_grid_points(30, 11);
     pts.insert(pts.end(), inner.begin(), inner.end());
     Plc plc = make_plc(pts, {{{8, 9, 10, 11}, {12, 13, 14, 15}}});
     plc.facets[0].holes.push_back({2, 2, 1.96875});
@@ -162,7 +140,7 @@ TEST(Cdt, StackedPrisms) {
 }
 
 TEST(Cdt, NeedsProtection) {
-    auto pts = interior_points(40, 3);
+    auto pts = dyadic_grid_points(40, 3);
     const auto box = box_corners(4, 4, 0, 4);
     pts.insert(pts.end(), box.begin(), box.end());
     const auto n = static_cast<std::uint32_t>(pts.size());
@@ -225,7 +203,7 @@ TEST(Cdt, Schoenhardt) {
 /// Random PLCs: the hull triangles of a random subset, as polygons among random points.
 TEST(Cdt, RandomHullFacePlcs) {
     for (std::uint64_t seed = 1; seed <= 8; ++seed) {
-        auto pts = interior_points(10, 100 + seed);
+        auto pts = dyadic_grid_points(10, 100 + seed);
         const Plc inner = make_plc(pts, {});
         const auto tets = delaunay(inner);
         std::map<std::array<std::uint32_t, 3>, int> count;
@@ -242,7 +220,7 @@ TEST(Cdt, RandomHullFacePlcs) {
                 facets.push_back({{g[0], g[1], g[2]}});
             }
         }
-        const auto outer = interior_points(30, 200 + seed);
+        const auto outer = dyadic_grid_points(30, 200 + seed);
         pts.insert(pts.end(), outer.begin(), outer.end());
         const Cdt cdt = checked_cdt(make_plc(pts, facets), true);
         EXPECT_EQ(cdt.plc.facets.size(), facets.size()) << "seed " << seed;

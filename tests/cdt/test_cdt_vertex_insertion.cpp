@@ -13,6 +13,7 @@
 
 #include "canonical.h"
 #include "cavity/core/cdt_validate.h"
+#include "plc_builders.h"
 #include "cavity/core/cdt_vertex_insertion.h"
 #include "cavity/core/complex_from_tets.h"
 #include "cavity/core/error.h"
@@ -22,23 +23,9 @@
 namespace cavity::core {
 namespace {
 
-using Loops = std::vector<std::vector<std::uint32_t>>;
-
-Plc make_plc(std::vector<Point3> points,
-             const std::vector<Loops>& facets,
-             std::vector<std::array<std::uint32_t, 2>> segments = {}) {
-    Plc plc;
-    plc.source = "test";
-    plc.points.points = std::move(points);
-    for (const auto& loops : facets) {
-        PlcFacet f;
-        f.loops = loops;
-        f.marker = static_cast<int>(plc.facets.size()) + 1;
-        plc.facets.push_back(std::move(f));
-    }
-    plc.segments = std::move(segments);
-    return plc;
-}
+using test::dyadic_grid_points;
+using test::Loops;
+using test::make_plc;
 
 std::vector<Point3> box_corners(double x, double y, double z0, double z1) {
     return {{0, 0, z0},
@@ -61,18 +48,6 @@ std::vector<Loops> box_faces(std::uint32_t b) {
             {{b + 3, b, b + 4, b + 7}}};
 }
 
-/// Points of a jittered binary grid inside (0, 4)^3.
-std::vector<Point3> grid_points(std::size_t n, std::uint64_t seed) {
-    Random random(seed);
-    std::vector<Point3> pts;
-    for (std::size_t i = 0; i < n; ++i) {
-        pts.push_back({static_cast<double>(1 + random.below(63)) / 16,
-                       static_cast<double>(1 + random.below(63)) / 16,
-                       static_cast<double>(1 + random.below(63)) / 16});
-    }
-    return pts;
-}
-
 Point3 random_point(Random& random, double lo, double hi) {
     return {random.uniform(lo, hi), random.uniform(lo, hi), random.uniform(lo, hi)};
 }
@@ -83,7 +58,7 @@ Plc cube_with_middle_square() {
     const std::vector<Point3> mid{
         {0, 0, 2.03125}, {4, 0, 2.03125}, {4, 4, 2.03125}, {0, 4, 2.03125}};
     pts.insert(pts.end(), mid.begin(), mid.end());
-    const auto inner = grid_points(40, 7);
+    const auto inner = dyadic_grid_points(40, 7);
     pts.insert(pts.end(), inner.begin(), inner.end());
     return make_plc(pts, {{{0, 1, 2, 3}}, {{4, 5, 6, 7}}, {{8, 9, 10, 11}}});
 }
@@ -91,7 +66,7 @@ Plc cube_with_middle_square() {
 /// A closed box: its six faces are polygons (the hull is constrained), with grid points inside.
 Plc closed_box() {
     auto pts = box_corners(4, 4, 0, 4);
-    const auto inner = grid_points(25, 5);
+    const auto inner = dyadic_grid_points(25, 5);
     pts.insert(pts.end(), inner.begin(), inner.end());
     return make_plc(pts, box_faces(0));
 }
@@ -229,7 +204,7 @@ Plc closed_polytope() {
             facets.push_back({{g[0], g[1], g[2]}});
         }
     }
-    for (const Point3& p : grid_points(20, 23)) {
+    for (const Point3& p : dyadic_grid_points(20, 23)) {
         pts.push_back({p.x / 2 + 1, p.y / 2 + 1, p.z / 2 + 1});
     }
     return make_plc(pts, facets);

@@ -9,6 +9,7 @@
 
 #include "cavity/core/cdt.h"
 #include "cavity/core/cdt_validate.h"
+#include "plc_builders.h"
 #include "cavity/core/edge_protection.h"
 #include "cavity/core/error.h"
 #include "cavity/core/plc_validity.h"
@@ -20,19 +21,8 @@
 namespace cavity::core {
 namespace {
 
-using Loops = std::vector<std::vector<std::uint32_t>>;
-
-Plc make_plc(std::vector<Point3> points, std::vector<Loops> facets) {
-    Plc plc;
-    plc.source = "test";
-    plc.points.points = std::move(points);
-    for (auto& loops : facets) {
-        PlcFacet f;
-        f.loops = std::move(loops);
-        plc.facets.push_back(std::move(f));
-    }
-    return plc;
-}
+using test::Loops;
+using test::make_plc;
 
 std::vector<std::array<std::uint32_t, 4>> delaunay(const Plc& plc) {
     std::vector<std::uint32_t> seq(plc.points.size());

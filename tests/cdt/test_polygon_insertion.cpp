@@ -12,6 +12,7 @@
 
 #include "cavity/core/cdt.h"
 #include "cavity/core/cdt_validate.h"
+#include "plc_builders.h"
 #include "cavity/core/complex_from_tets.h"
 #include "cavity/core/error.h"
 #include "cavity/core/random.h"
@@ -21,23 +22,12 @@
 namespace cavity::core {
 namespace {
 
+using test::Loops;
+using test::make_plc;
+
 using Q = boost::multiprecision::cpp_rational;
 using QPoint = std::array<Q, 3>;
 using Quad = std::array<std::uint32_t, 4>;
-using Loops = std::vector<std::vector<std::uint32_t>>;
-
-Plc make_plc(std::vector<Point3> points, const std::vector<Loops>& facets) {
-    Plc plc;
-    plc.source = "test";
-    plc.points.points = std::move(points);
-    for (const auto& loops : facets) {
-        PlcFacet f;
-        f.loops = loops;
-        f.marker = static_cast<int>(plc.facets.size()) + 1;
-        plc.facets.push_back(std::move(f));
-    }
-    return plc;
-}
 
 /// Distinct points of a binary grid inside (lo, lo + 4)^3: dyadic, so midpoints stay exact.
 std::vector<Point3> cloud(std::size_t n, std::uint64_t seed, double lo = 0) {
