@@ -9,22 +9,6 @@ namespace cavity::core {
 
 namespace {
 
-ExactPoint minus(const ExactPoint& p, const ExactPoint& q) {
-    return {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-}
-
-ExactPoint cross(const ExactPoint& u, const ExactPoint& v) {
-    return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-}
-
-Rational dot(const ExactPoint& u, const ExactPoint& v) {
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-}
-
-bool is_zero(const ExactPoint& v) {
-    return v[0] == 0 && v[1] == 0 && v[2] == 0;
-}
-
 /// A point of the facet's plane, projected one-to-one by dropping one coordinate.
 struct Point2 {
     Rational u;

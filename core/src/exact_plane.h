@@ -23,6 +23,21 @@ using ExactPoint = std::array<Rational, 3>;
 
 ExactPoint exact_point(const Point3& p);
 
+/// Vector arithmetic on exact points.
+inline ExactPoint minus(const ExactPoint& p, const ExactPoint& q) {
+    return {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+}
+
+inline ExactPoint cross(const ExactPoint& u, const ExactPoint& v) {
+    return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+
+inline Rational dot(const ExactPoint& u, const ExactPoint& v) {
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+
+inline bool is_zero(const ExactPoint& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+
 /// The plane through three non-collinear points a, b, c, with normal n = (b - a) x (c - a).
 class ExactPlane {
 public:
