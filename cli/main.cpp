@@ -1,11 +1,13 @@
 #include <cstdio>
 #include <exception>
+#include <new>
 
 #include <CLI/CLI.hpp>
 
 #include "cavity/core/error.h"
 #include "cavity/predicates/fp_environment.h"
 #include "commands.h"
+#include "exit_codes.h"
 
 int main(int argc, char** argv) {
     // The predicates are proved for round-to-nearest without flush-to-zero; refuse to run in any
@@ -31,10 +33,13 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const cavity::core::Error& e) {
         std::fprintf(stderr, "cavity: %s\n", e.what());
-        return 1;
+        return cavity::cli::exit_code(e.kind());
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "cavity: out of memory\n");
+        return cavity::cli::kExitSystem;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "cavity: error: %s\n", e.what());
-        return 1;
+        std::fprintf(stderr, "cavity: internal error: %s\n", e.what());
+        return cavity::cli::kExitInternal;
     }
     return 0;
 }

@@ -21,8 +21,8 @@ constexpr std::size_t kFlushThreshold = std::size_t{1} << 16;
 // O_EXCL makes the creation fail rather than share a name with a concurrent writer.
 constexpr int kMaxNameAttempts = 100;
 
-Error system_error(const std::filesystem::path& file, const std::string& action, int error) {
-    return Error(
+SystemError system_error(const std::filesystem::path& file, const std::string& action, int error) {
+    return SystemError(
         located_message(file.string(), std::nullopt, action + ": " + std::strerror(error)));
 }
 
@@ -101,7 +101,7 @@ AtomicFileGroup::Writer& AtomicFileGroup::add(const std::filesystem::path& targe
             throw system_error(target, "cannot create a file in its directory", errno);
         }
     }
-    throw Error(located_message(
+    throw SystemError(located_message(
         target.string(), std::nullopt, "cannot find a free temporary name in its directory"));
 }
 
