@@ -5,6 +5,7 @@
 #include "cavity/core/cdt_validate.h"
 #include "cavity/core/error.h"
 #include "cavity/core/mesh_io.h"
+#include "cavity/core/orientation.h"
 #include "cavity/core/plc.h"
 #include "cavity/core/point_io.h"
 #include "cavity/core/validate.h"
@@ -42,7 +43,8 @@ void run_cdt_check(const CheckArgs& args) {
                               args.poly);
         }
     }
-    const auto tets = core::read_ele(args.mesh, plc.points.index_base);
+    const auto tets = core::engine_orientation_from_file(
+        args.mesh, plc.points, core::read_ele(args.mesh, plc.points.index_base));
     const core::CdtValidation report = core::validate_cdt(plc, tets);
     if (!report.ok()) {
         std::string message = args.mesh + ": not the constrained Delaunay tetrahedralization of " +
@@ -65,7 +67,8 @@ void run_check(const CheckArgs& args) {
         return;
     }
     const core::PointSet points = core::read_points(args.points, args.weighted);
-    const auto tets = core::read_ele(args.mesh, points.index_base);
+    const auto tets = core::engine_orientation_from_file(
+        args.mesh, points, core::read_ele(args.mesh, points.index_base));
     const core::ValidationReport report = core::validate(points, tets);
     if (!args.quiet) {
         std::printf(
@@ -94,8 +97,10 @@ void add_check_command(CLI::App& app) {
     auto args = std::make_shared<CheckArgs>();
     CLI::App* cmd = app.add_subcommand(
         "check",
-        "Exactly validate a tetrahedral mesh (TetGen .ele) as the Delaunay triangulation of a point "
-        "file; exit status 0 when valid, 1 otherwise");
+        "Exactly validate a tetrahedral mesh (TetGen .ele) as the Delaunay triangulation of a "
+        "point "
+        "file; exit status 0 when valid, 1 otherwise. Tetrahedra must have positive volume by the "
+        "right-hand rule, as TetGen and cavity write them");
     cmd->add_option("points", args->points, "the points (.node, .xyz, .ply)")->required();
     cmd->add_option("mesh", args->mesh, "the tetrahedra (.ele), numbered like the points")->required();
     cmd->add_flag("--weighted", args->weighted, "weighted Delaunay (weights from the point file)");

@@ -7,5 +7,6 @@ target_sources(cavity_core PRIVATE
   src/duplicates.cpp
   src/triangulate.cpp
   src/validate.cpp
+  src/orientation.cpp
   src/page_releaser.cpp
 )

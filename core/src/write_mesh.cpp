@@ -39,7 +39,7 @@ void write_ele(AtomicFileGroup::Writer& out, const PointSet& points, std::span<c
     text += " 4 0\n";
     for (std::size_t t = 0; t < tets.size(); ++t) {
         append_uint(text, t + base);
-        for (const std::uint32_t v : tets[t]) {
+        for (const std::uint32_t v : swap_handedness(tets[t])) {
             text += ' ';
             append_uint(text, v + base);
         }
@@ -74,8 +74,9 @@ void write_vtu_body(AtomicFileGroup::Writer& out,
     text +=
         "</DataArray>\n</Points>\n<Cells>\n"
         "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (const Tet& tet : tets) {
-        for (int i = 0; i < 4; ++i) {
+    for (const Tet& engine_tet : tets) {
+        const Tet tet = swap_handedness(engine_tet);
+        for (std::size_t i = 0; i < 4; ++i) {
             append_uint(text, tet[i]);
             text += i < 3 ? ' ' : '\n';
         }

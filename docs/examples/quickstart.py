@@ -12,9 +12,12 @@ points = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape
 tri = cavity.Delaunay(points)  # order="brio", locate="walk", seed=0
 print(tri)                     # <cavity.Delaunay: 125 points, ... tetrahedra>
 
-# scipy's attributes: simplices (positively oriented), neighbors (-1 on the hull), convex_hull...
+# scipy's attributes: simplices (positive volume by the right-hand rule, as TetGen and VTK),
+# neighbors (-1 on the hull), convex_hull...
 p = points[tri.simplices]
-assert np.all(cavity.orient3d(p[:, 0], p[:, 1], p[:, 2], p[:, 3]) == 1)  # no flat tetrahedron
+assert np.all(np.linalg.det(p[:, 1:] - p[:, :1]) > 0)
+# orient3d follows Shewchuk's sign, the opposite of the volume: -1 everywhere, never 0 (flat).
+assert np.all(cavity.orient3d(p[:, 0], p[:, 1], p[:, 2], p[:, 3]) == -1)
 assert (tri.neighbors == -1).sum() == len(tri.convex_hull)
 
 # ... and cavity's own: the exact validator and the work the run did.

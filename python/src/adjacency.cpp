@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cavity/core/error.h"
+#include "cavity/core/mesh_io.h"
 #include "cavity/core/tetrahedron.h"
 
 namespace cavity::python {
@@ -157,6 +158,13 @@ Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32
                                 static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[1])]),
                                 static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[2])])});
         }
+    }
+
+    // Hand the tetrahedra out with positive volume by the right-hand rule (scipy's users, VTK and
+    // PyVista expect it): swapping vertices 0 and 1 swaps the neighbours opposite them too.
+    for (std::size_t t = 0; t < m; ++t) {
+        out.simplices[t] = core::swap_handedness(out.simplices[t]);
+        std::swap(out.neighbors[4 * t], out.neighbors[4 * t + 1]);
     }
     return out;
 }

@@ -12,7 +12,8 @@ namespace cavity::python {
 using Tet = std::array<std::uint32_t, 4>;
 
 struct Adjacency {
-    /// The tetrahedra (input ids, orientation kept), renumbered along the rank order: sorted by
+    /// The tetrahedra (input ids, positive volume by the right-hand rule: the engine's orientation
+    /// with vertices 0 and 1 swapped), renumbered along the rank order: sorted by
     /// their lowest-ranked vertex, so that tetrahedra near in space are near in the array.
     std::vector<Tet> simplices;
     /// neighbors[4t + i]: the tetrahedron across the facet opposite vertex i of simplices[t], or

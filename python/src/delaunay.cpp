@@ -1,20 +1,21 @@
 // cavity.Delaunay: scipy.spatial.Delaunay's shape over cavity::core::triangulate.
 
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <ctime>
+#include <string>
+#include <vector>
+
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <array>
-#include <chrono>
-#include <ctime>
-#include <cstdint>
-#include <string>
-#include <vector>
-
 #include "adjacency.h"
 #include "bindings.h"
 #include "cavity/core/insertion_order.h"
+#include "cavity/core/mesh_io.h"
 #include "cavity/core/triangulate.h"
 #include "cavity/core/validate.h"
 #include "input_arrays.h"
@@ -130,10 +131,15 @@ public:
     /// Runs the exact validator (core::validate) on this triangulation.
     bool check() const {
         const auto* data = reinterpret_cast<const Tet*>(simplices_.data());
-        const std::span<const Tet> tets(data, static_cast<std::size_t>(simplices_.shape(0)));
+        const std::span<const Tet> simplices(data, static_cast<std::size_t>(simplices_.shape(0)));
         core::ValidationReport report;
         {
             py::gil_scoped_release nogil;
+            // The validator takes the engine's orientation, the mirror image of `simplices`.
+            std::vector<Tet> tets(simplices.begin(), simplices.end());
+            for (Tet& t : tets) {
+                t = core::swap_handedness(t);
+            }
             report = core::validate(input_, tets);
         }
         if (report.ok()) {

@@ -17,9 +17,10 @@ def assert_well_formed(d):
     p = d.points
     s = d.simplices
     assert s.ndim == 2 and s.shape[1] == 4
-    # Never a flat or inverted tetrahedron.
+    # Never a flat or inverted tetrahedron: positive volume by the right-hand rule (TetGen's and
+    # VTK's convention), which is orient3d < 0 in Shewchuk's sign convention, decided exactly.
     signs = cavity.orient3d(p[s[:, 0]], p[s[:, 1]], p[s[:, 2]], p[s[:, 3]])
-    assert np.all(signs == 1)
+    assert np.all(signs == -1)
     # neighbors[t, i] shares the facet opposite vertex i, and the relation is symmetric.
     nb = d.neighbors
     for t in range(len(s)):

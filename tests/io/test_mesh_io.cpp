@@ -8,6 +8,7 @@
 #include "cavity/core/atomic_file.h"
 #include "cavity/core/error.h"
 #include "cavity/core/mesh_io.h"
+#include "cavity/core/orientation.h"
 #include "cavity/core/point_io.h"
 #include "temp_dir.h"
 
@@ -56,10 +57,20 @@ TEST(MeshIo, TetgenRoundTrip) {
                 EXPECT_EQ(back.points[i].z, set.points[i].z);
             }
             EXPECT_EQ(back.weights, set.weights);
-            EXPECT_EQ(read_ele(dir.path() / "mesh.ele", base), kTets);
+            // The file lists each tetrahedron with positive right-hand volume (TetGen's
+            // convention): the engine's first two vertices swapped.
+            const std::vector<Tet> read = read_ele(dir.path() / "mesh.ele", base);
+            ASSERT_EQ(read.size(), kTets.size());
+            for (std::size_t t = 0; t < read.size(); ++t) {
+                EXPECT_EQ(read[t], swap_handedness(kTets[t]));
+            }
+            const OrientationCount engine = count_orientations(set, kTets);
+            const OrientationCount file = count_orientations(set, read);
+            EXPECT_EQ(file.positive, engine.negative);
+            EXPECT_EQ(file.negative, engine.positive);
             const std::string ele = contents(dir.path() / "mesh.ele");
             EXPECT_EQ(ele.substr(0, ele.find('\n')), "6 4 0");
-            const std::string first = base == 0 ? "\n0 0 1 3 7\n" : "\n1 1 2 4 8\n";
+            const std::string first = base == 0 ? "\n0 1 0 3 7\n" : "\n1 2 1 4 8\n";
             EXPECT_NE(ele.find(first), std::string::npos) << ele;
         }
     }
@@ -72,7 +83,7 @@ TEST(MeshIo, VtuIsAnUnstructuredGridOfTetrahedra) {
     const std::string vtu = contents(dir.path() / "mesh.vtu");
     EXPECT_NE(vtu.find("<VTKFile type=\"UnstructuredGrid\""), std::string::npos);
     EXPECT_NE(vtu.find("NumberOfPoints=\"8\" NumberOfCells=\"6\""), std::string::npos);
-    EXPECT_NE(vtu.find("\n0 1 3 7\n"), std::string::npos) << "connectivity is 0-based";
+    EXPECT_NE(vtu.find("\n1 0 3 7\n"), std::string::npos) << "connectivity is 0-based";
     EXPECT_NE(vtu.find("Name=\"offsets\" format=\"ascii\">\n4\n8\n"), std::string::npos);
     std::size_t tetra = 0;
     for (std::size_t at = vtu.find("\n10\n"); at != std::string::npos;

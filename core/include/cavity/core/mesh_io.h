@@ -14,11 +14,20 @@ namespace cavity::core {
 /// A tetrahedron as four 0-based input indices.
 using Tet = std::array<std::uint32_t, 4>;
 
+/// The engine orders every tetrahedron so that orient3d(a, b, c, d) > 0 (Shewchuk's convention),
+/// which is det[b−a, c−a, d−a] < 0: a negative volume by the right-hand rule. TetGen's files, VTK's
+/// cells and scipy's users expect the opposite, positive volume. Swapping the first two vertices
+/// converts either way; everything cavity writes or hands to Python goes through it.
+constexpr Tet swap_handedness(const Tet& t) {
+    return {t[1], t[0], t[2], t[3]};
+}
+
 /// Writes PREFIX.node (every input point, numbered from points.index_base, the weight as the
 /// attribute when weighted) and PREFIX.ele (`<#tets> 4 0`, then `i v0 v1 v2 v3` numbered from
-/// points.index_base). Both files are committed together (AtomicFileGroup): on any error neither
-/// appears. Coordinates are printed so that they read back exactly.
-/// \throws Error naming the file for a failed write or a tet index outside the point set.
+/// points.index_base). `tets` are in the engine's orientation (orient3d > 0); the file lists each
+/// with positive volume by the right-hand rule, as TetGen does. Both files are committed together
+/// (AtomicFileGroup): on any error neither appears. Coordinates are printed so that they read back
+/// exactly. \throws Error naming the file for a failed write or a tet index outside the point set.
 void write_tetgen(const std::filesystem::path& prefix,
                   const PointSet& points,
                   std::span<const Tet> tets);
@@ -30,7 +39,8 @@ void write_tetgen(AtomicFileGroup& group,
                   std::span<const Tet> tets);
 
 /// Writes PREFIX.vtu: a VTK XML UnstructuredGrid (ASCII, Float64 points, cell type 10 =
-/// VTK_TETRA) for ParaView, with the weights as point data when weighted. Atomic as above.
+/// VTK_TETRA) for ParaView, with the weights as point data when weighted. `tets` are in the
+/// engine's orientation; each cell has positive volume, as VTK expects. Atomic as above.
 void write_vtu(const std::filesystem::path& prefix,
                const PointSet& points,
                std::span<const Tet> tets);

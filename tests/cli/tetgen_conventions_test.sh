@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# cavity and Debian's TetGen triangulate the same points; each program's .ele is checked with the
+# other's convention: every tetrahedron of both has positive right-hand volume (counted exactly by
+# volume_signs.py, independent of cavity), `cavity check` accepts TetGen's mesh, and a mesh in the
+# inverted convention (cavity's files before 0.2) is refused by one message naming it.
+set -euo pipefail
+cavity="$1"
+here="$(cd "$(dirname "$0")" && pwd)"
+python=/usr/bin/python3
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# A grid makes the Delaunay triangulation degenerate: TetGen and cavity may break ties apart, but
+# both must be valid and positively oriented.
+for dist in cube grid; do
+  "$cavity" generate "$dist" 1000 -o "$dist.node" >/dev/null
+  "$cavity" triangulate "$dist.node" -o "$dist.cavity" --quiet
+  tetgen -Q "$dist.node" >/dev/null
+  read -r pos neg flat < <("$python" "$here/volume_signs.py" "$dist.node" "$dist.cavity.ele")
+  [ "$neg" = 0 ] && [ "$flat" = 0 ] && [ "$pos" -gt 0 ] ||
+    fail "$dist: cavity's .ele has $pos positive, $neg negative, $flat flat tetrahedra"
+  read -r pos neg flat < <("$python" "$here/volume_signs.py" "$dist.node" "$dist.1.ele")
+  [ "$neg" = 0 ] && [ "$flat" = 0 ] ||
+    fail "$dist: TetGen's .ele has $neg negative, $flat flat tetrahedra: the test's premise is wrong"
+  "$cavity" check "$dist.1.node" "$dist.1.ele" --quiet 2>err.txt ||
+    fail "$dist: cavity check rejects TetGen's mesh: $(head -3 err.txt)"
+  "$cavity" check "$dist.node" "$dist.cavity.ele" --quiet 2>err.txt ||
+    fail "$dist: cavity check rejects cavity's mesh: $(head -3 err.txt)"
+done
+
+# On points in general position the Delaunay triangulation is unique: the same tetrahedra.
+sorted() { awk 'NR > 1 && $1 !~ /^#/ && NF >= 5 { print $2; print $3; print $4; print $5 }' "$1" |
+  "$python" -c 'import sys; v = sys.stdin.read().split()
+print(sorted(tuple(sorted(map(int, v[i:i + 4]))) for i in range(0, len(v), 4)))'; }
+a="$(sorted cube.cavity.ele)"
+b="$(sorted cube.1.ele)"
+[ "${#a}" -gt 100 ] && [ "$a" = "$b" ] || fail "cube: cavity and TetGen differ"
+
+# The inverted convention is refused by one message that names it.
+awk 'NR == 1 || $1 ~ /^#/ { print; next } { print $1, $3, $2, $4, $5 }' cube.cavity.ele > inverted.ele
+"$cavity" check cube.node inverted.ele --quiet 2>err.txt && fail "check accepts an inverted mesh"
+grep -q "inverted.ele: all [0-9]* non-flat tetrahedra have negative volume" err.txt ||
+  fail "inverted mesh: unexpected message: $(cat err.txt)"
+echo "cavity and TetGen agree on the orientation convention"
