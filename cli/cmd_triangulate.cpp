@@ -1,16 +1,17 @@
-#include <sys/resource.h>
-
 #include <chrono>
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include <sys/resource.h>
+
 #include "cavity/core/atomic_file.h"
 #include "cavity/core/error.h"
 #include "cavity/core/insertion_order.h"
 #include "cavity/core/mesh_io.h"
 #include "cavity/core/point_io.h"
+#include "cavity/core/tet_adjacency.h"
 #include "cavity/core/triangulate.h"
 #include "cavity/core/validate.h"
 #include "cavity/core/vertex_deletion.h"
@@ -37,6 +38,9 @@ struct TriangulateArgs {
     bool weighted = false;
     bool check = false;
     bool quiet = false;
+    bool neighbors = false;
+    bool hull_faces = false;
+    bool ascii = false;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -88,7 +92,9 @@ struct Timings {
     double write_s = 0;
 };
 
-void write_stats(const TriangulateArgs& args,
+/// Adds the --stats file to the run's group, so that it is committed with the mesh or not at all.
+void write_stats(core::AtomicFileGroup& files,
+                 const TriangulateArgs& args,
                  const core::PointSet& points,
                  const core::Triangulation& tri,
                  const Timings& timings) {
@@ -132,9 +138,32 @@ void write_stats(const TriangulateArgs& args,
     }
     json.end_array();
     json.end_object();
-    core::AtomicFileGroup files;
     files.add(args.stats).write(json.text());
-    files.commit();
+}
+
+/// Adds the mesh files to the run's group: TetGen's .node/.ele (with .neigh and .face when asked,
+/// numbered along the insertion order's curve so that neighbours are near in the files) or .vtu.
+void write_mesh(core::AtomicFileGroup& files,
+                const TriangulateArgs& args,
+                const core::PointSet& points,
+                const core::Triangulation& tri,
+                const core::InsertionOrder& order) {
+    if (args.format == "vtu") {
+        core::VtuOptions options;
+        options.encoding = args.ascii ? core::VtuEncoding::kAscii : core::VtuEncoding::kBinary;
+        core::write_vtu(files, args.prefix, points, tri.tets, options);
+        return;
+    }
+    if (!args.neighbors && !args.hull_faces) {
+        core::write_tetgen(files, args.prefix, points, tri.tets);
+        return;
+    }
+    std::vector<std::uint32_t> rank(order.sequence.size());
+    for (std::size_t i = 0; i < order.sequence.size(); ++i) {
+        rank[order.sequence[i]] = static_cast<std::uint32_t>(i);
+    }
+    const core::Adjacency adjacency = core::build_adjacency(tri.tets, rank);
+    core::write_tetgen(files, args.prefix, points, adjacency, {args.neighbors, args.hull_faces});
 }
 
 /// Duplicates and redundant points are never dropped silently: a summary goes to stderr (the
@@ -239,16 +268,16 @@ void run_triangulate(const TriangulateArgs& args) {
         }
     }
 
+    // Every file of the run (mesh and stats) is written to a temporary first and committed
+    // together: a failure anywhere leaves the previous files untouched.
+    core::AtomicFileGroup files;
     clock = std::chrono::steady_clock::now();
-    if (args.format == "vtu") {
-        core::write_vtu(args.prefix, points, tri.tets);
-    } else {
-        core::write_tetgen(args.prefix, points, tri.tets);
-    }
+    write_mesh(files, args, points, tri, order);
     timings.write_s = seconds_since(clock);
     if (!args.stats.empty()) {
-        write_stats(args, points, tri, timings);
+        write_stats(files, args, points, tri, timings);
     }
+    files.commit();
     if (!args.quiet) {
         std::printf("%zu points -> %zu tetrahedra, %zu hull triangles%s in %.3f s (order %.3f s)\n",
                     points.size(), tri.tets.size(), tri.hull_triangles, args.check ? ", valid," : "",
@@ -294,7 +323,25 @@ void add_triangulate_command(CLI::App& app) {
     cmd->add_option("--format", args->format, "output format")
         ->check(CLI::IsMember({"tetgen", "vtu"}))
         ->capture_default_str();
-    cmd->callback([args] { run_triangulate(*args); });
+    cmd->add_flag("-n,--neigh",
+                  args->neighbors,
+                  "also write PREFIX.neigh: each tetrahedron's four neighbours (TetGen's -n)");
+    cmd->add_flag("-f,--faces",
+                  args->hull_faces,
+                  "also write PREFIX.face: the convex hull's triangles, counter-clockwise seen "
+                  "from outside (TetGen's boundary faces)");
+    cmd->add_flag("--ascii",
+                  args->ascii,
+                  "with --format vtu: ASCII arrays instead of zlib-compressed base64");
+    cmd->callback([args] {
+        if (args->format != "tetgen" && (args->neighbors || args->hull_faces)) {
+            throw CLI::ValidationError("--neigh/--faces", "TetGen files: not with --format vtu");
+        }
+        if (args->format != "vtu" && args->ascii) {
+            throw CLI::ValidationError("--ascii", "only with --format vtu");
+        }
+        run_triangulate(*args);
+    });
 }
 
 }  // namespace cavity::cli

@@ -15,6 +15,7 @@ if(NOT CLI11_FOUND)
   target_include_directories(CLI11::CLI11 INTERFACE ${CLI11_INCLUDE_DIR})
 endif()
 find_package(Threads REQUIRED)
+find_package(ZLIB REQUIRED)  # the .vtu writer's compression (Debian: zlib1g-dev)
 
 if(CAVITY_BUILD_TESTS)
   find_package(GTest REQUIRED)

@@ -8,8 +8,13 @@ target_sources(cavity_core PRIVATE
   src/point_io.cpp
   src/read_ele.cpp
   src/write_mesh.cpp
+  src/write_tetgen_adjacency.cpp
+  src/write_vtu.cpp
+  src/vtk_binary.cpp
   src/lattice_sphere.cpp
   src/generate.cpp
   src/spatial_sort.cpp
   src/insertion_order.cpp
 )
+# .vtu arrays are zlib-compressed as VTK writes them.
+target_link_libraries(cavity_core PRIVATE ZLIB::ZLIB)

@@ -8,5 +8,6 @@ target_sources(cavity_core PRIVATE
   src/triangulate.cpp
   src/validate.cpp
   src/orientation.cpp
+  src/tet_adjacency.cpp
   src/page_releaser.cpp
 )

@@ -8,6 +8,7 @@ packages=(
   libgmp-dev libboost-dev libcli11-dev
   libgtest-dev libbenchmark-dev libcgal-dev
   python3-matplotlib tetgen pybind11-dev python3-dev python3-numpy python3-pytest python3-scipy
+  zlib1g-dev python3-meshio python3-vtk9
 )
 
 missing=()

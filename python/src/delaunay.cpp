@@ -12,10 +12,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "adjacency.h"
 #include "bindings.h"
 #include "cavity/core/insertion_order.h"
 #include "cavity/core/mesh_io.h"
+#include "cavity/core/tet_adjacency.h"
 #include "cavity/core/triangulate.h"
 #include "cavity/core/validate.h"
 #include "input_arrays.h"
@@ -60,7 +60,7 @@ py::array_t<std::int32_t> adopt(std::vector<T>&& values, std::vector<py::ssize_t
 /// Everything one triangulation produces, computed without the GIL.
 struct Built {
     core::Triangulation triangulation;
-    Adjacency adjacency;
+    core::Adjacency adjacency;
     std::pair<double, double> order_s;  ///< {wall, CPU}
     std::pair<double, double> triangulate_s;
     std::pair<double, double> adjacency_s;
@@ -82,7 +82,7 @@ Built build(const core::PointSet& input,
     for (std::size_t r = 0; r < order.sequence.size(); ++r) {
         rank[order.sequence[r]] = static_cast<std::uint32_t>(r);
     }
-    b.adjacency = build_adjacency(b.triangulation.tets, rank);
+    b.adjacency = core::build_adjacency(b.triangulation.tets, rank);
     b.triangulation.tets = {};  // adjacency.simplices holds them, renumbered
     b.adjacency_s = clock.elapsed();
     return b;
@@ -130,14 +130,15 @@ public:
 
     /// Runs the exact validator (core::validate) on this triangulation.
     bool check() const {
-        const auto* data = reinterpret_cast<const Tet*>(simplices_.data());
-        const std::span<const Tet> simplices(data, static_cast<std::size_t>(simplices_.shape(0)));
+        const auto* data = reinterpret_cast<const core::Tet*>(simplices_.data());
+        const std::span<const core::Tet> simplices(data,
+                                                   static_cast<std::size_t>(simplices_.shape(0)));
         core::ValidationReport report;
         {
             py::gil_scoped_release nogil;
             // The validator takes the engine's orientation, the mirror image of `simplices`.
-            std::vector<Tet> tets(simplices.begin(), simplices.end());
-            for (Tet& t : tets) {
+            std::vector<core::Tet> tets(simplices.begin(), simplices.end());
+            for (core::Tet& t : tets) {
                 t = core::swap_handedness(t);
             }
             report = core::validate(input_, tets);

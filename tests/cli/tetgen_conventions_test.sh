@@ -2,7 +2,8 @@
 # cavity and Debian's TetGen triangulate the same points; each program's .ele is checked with the
 # other's convention: every tetrahedron of both has positive right-hand volume (counted exactly by
 # volume_signs.py, independent of cavity), `cavity check` accepts TetGen's mesh, and a mesh in the
-# inverted convention (cavity's files before 0.2) is refused by one message naming it.
+# inverted convention (cavity's files before 0.2) is refused by one message naming it. The .neigh
+# and .face files are checked against their definitions and TetGen's boundary faces.
 set -euo pipefail
 cavity="$1"
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -37,6 +38,16 @@ print(sorted(tuple(sorted(map(int, v[i:i + 4]))) for i in range(0, len(v), 4)))'
 a="$(sorted cube.cavity.ele)"
 b="$(sorted cube.1.ele)"
 [ "${#a}" -gt 100 ] && [ "$a" = "$b" ] || fail "cube: cavity and TetGen differ"
+
+# TetGen's companions: .neigh (-n) and the hull's .face, against TetGen's boundary faces.
+"$cavity" triangulate cube.node -o cube.companions -n -f --quiet
+"$python" "$here/tetgen_companions.py" cube.companions cube.1.face >/dev/null ||
+  fail "cube: .neigh or .face wrong"
+awk 'NR == 1 { print; next } { $1 = $1 + 1; print }' cube.node > one.node  # 1-based numbering
+"$cavity" triangulate one.node -o one.companions -n -f --quiet
+tetgen -Q one.node >/dev/null
+"$python" "$here/tetgen_companions.py" one.companions one.1.face >/dev/null ||
+  fail "1-based: .neigh or .face wrong"
 
 # The inverted convention is refused by one message that names it.
 awk 'NR == 1 || $1 ~ /^#/ { print; next } { print $1, $3, $2, $4, $5 }' cube.cavity.ele > inverted.ele

@@ -79,7 +79,9 @@ TEST(MeshIo, TetgenRoundTrip) {
 
 TEST(MeshIo, VtuIsAnUnstructuredGridOfTetrahedra) {
     TempDir dir;
-    write_vtu(dir.path() / "mesh", cube_corners(true, 1), kTets);
+    VtuOptions ascii;
+    ascii.encoding = VtuEncoding::kAscii;
+    write_vtu(dir.path() / "mesh", cube_corners(true, 1), kTets, ascii);
     const std::string vtu = contents(dir.path() / "mesh.vtu");
     EXPECT_NE(vtu.find("<VTKFile type=\"UnstructuredGrid\""), std::string::npos);
     EXPECT_NE(vtu.find("NumberOfPoints=\"8\" NumberOfCells=\"6\""), std::string::npos);
@@ -92,7 +94,21 @@ TEST(MeshIo, VtuIsAnUnstructuredGridOfTetrahedra) {
     }
     EXPECT_EQ(tetra, 6u);
     EXPECT_NE(vtu.find("Name=\"weight\""), std::string::npos);
+    // Cell data: each cell's number in the .ele file, here 1-based as the input.
+    EXPECT_NE(vtu.find("Name=\"tet_id\" format=\"ascii\">\n1\n2\n3\n4\n5\n6\n"), std::string::npos);
     EXPECT_NE(vtu.find("</VTKFile>"), std::string::npos);
+}
+
+// The default encoding is VTK's zlib-compressed base64 (decoded and checked by meshio in the
+// cli.meshio_vtu test); here only its declaration and that no ASCII array is left.
+TEST(MeshIo, VtuIsCompressedBinaryByDefault) {
+    TempDir dir;
+    write_vtu(dir.path() / "mesh", cube_corners(false, 0), kTets);
+    const std::string vtu = contents(dir.path() / "mesh.vtu");
+    EXPECT_NE(vtu.find("header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\""),
+              std::string::npos);
+    EXPECT_EQ(vtu.find("format=\"ascii\""), std::string::npos);
+    EXPECT_NE(vtu.find("Name=\"connectivity\" format=\"binary\""), std::string::npos);
 }
 
 TEST(MeshIo, FailedWriteLeavesNothingBehind) {

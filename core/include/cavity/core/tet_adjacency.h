@@ -5,11 +5,12 @@
 #include <span>
 #include <vector>
 
-/// The combinatorial views scipy.spatial.Delaunay users expect, derived from the bare list of
-/// tetrahedra that cavity::core::triangulate returns.
-namespace cavity::python {
+#include "cavity/core/mesh_io.h"
 
-using Tet = std::array<std::uint32_t, 4>;
+/// The combinatorial views of a triangulation that leave the program (TetGen's .neigh and .face,
+/// scipy.spatial.Delaunay's attributes), derived from the bare list of tetrahedra that
+/// triangulate() returns.
+namespace cavity::core {
 
 struct Adjacency {
     /// The tetrahedra (input ids, positive volume by the right-hand rule: the engine's orientation
@@ -27,12 +28,12 @@ struct Adjacency {
 
 /// Renumbers `tets` (positively oriented, vertex ids < rank.size()) and matches their facets in
 /// O(m) expected time: facets are bucketed by their lowest-ranked vertex (counting sort) and
-/// paired inside each bucket (hashing), where the two other vertices identify them. `rank` is a permutation of the point
-/// ids along a space-filling curve (the insertion order). Sorting the tetrahedra by rank first
-/// makes every later pass nearly sequential: input ids of random points are random in space, and
-/// the engine's storage slots are recycled, so neither order is local. Memory: 12 bytes per
-/// half-facet and the renumbered copy besides the output.
-/// \throws cavity::core::Error if a triangle has more than two tetrahedra (not a manifold).
+/// paired inside each bucket (hashing), where the two other vertices identify them. `rank` is a
+/// permutation of the point ids along a space-filling curve (the insertion order). Sorting the
+/// tetrahedra by rank first makes every later pass nearly sequential: input ids of random points
+/// are random in space, and the engine's storage slots are recycled, so neither order is local.
+/// Memory: 12 bytes per half-facet and the renumbered copy besides the output. \throws Error if a
+/// triangle has more than two tetrahedra (not a manifold).
 Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32_t> rank);
 
-}  // namespace cavity::python
+}  // namespace cavity::core

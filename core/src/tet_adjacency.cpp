@@ -1,17 +1,14 @@
-#include "adjacency.h"
+#include "cavity/core/tet_adjacency.h"
 
 #include <algorithm>
 #include <string>
 
 #include "cavity/core/error.h"
-#include "cavity/core/mesh_io.h"
 #include "cavity/core/tetrahedron.h"
 
-namespace cavity::python {
+namespace cavity::core {
 
 namespace {
-
-using core::kFacetVertices;
 
 /// The facet opposite slot f, sorted: {smallest vertex, the other two packed into a 64-bit key}.
 struct SortedFacet {
@@ -102,11 +99,13 @@ Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32
     // small open-addressing table, cheaper than sorting the bucket; a slot belongs to the current
     // bucket when its stamp is the bucket's, so the table is never cleared.
     constexpr std::uint32_t kPaired = 0xFFFF'FFFFu;
+
     struct Slot {
         std::uint64_t key = 0;
         std::uint32_t half = 0;
         std::uint32_t stamp = 0;  // bucket v + 1; 0: never used
     };
+
     std::vector<Slot> table(64);
     for (std::size_t v = 0; v < point_count; ++v) {
         const std::uint32_t size = begin[v + 1] - begin[v];
@@ -133,10 +132,9 @@ Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32
             }
             if (slot.half == kPaired) {
                 const Tet& t = out.simplices[h >> 2];
-                throw core::Error("not a manifold: a triangle of tetrahedron (" +
-                                  std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
-                                  std::to_string(t[2]) + ", " + std::to_string(t[3]) +
-                                  ") has more than two tetrahedra");
+                throw Error("not a manifold: a triangle of tetrahedron (" + std::to_string(t[0]) +
+                            ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ", " +
+                            std::to_string(t[3]) + ") has more than two tetrahedra");
             }
             out.neighbors[slot.half] = static_cast<std::int32_t>(h >> 2);
             out.neighbors[h] = static_cast<std::int32_t>(slot.half >> 2);
@@ -163,10 +161,10 @@ Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32
     // Hand the tetrahedra out with positive volume by the right-hand rule (scipy's users, VTK and
     // PyVista expect it): swapping vertices 0 and 1 swaps the neighbours opposite them too.
     for (std::size_t t = 0; t < m; ++t) {
-        out.simplices[t] = core::swap_handedness(out.simplices[t]);
+        out.simplices[t] = swap_handedness(out.simplices[t]);
         std::swap(out.neighbors[4 * t], out.neighbors[4 * t + 1]);
     }
     return out;
 }
 
-}  // namespace cavity::python
+}  // namespace cavity::core

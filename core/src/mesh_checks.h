@@ -1,0 +1,28 @@
+#pragma once
+
+// What the mesh writers share: file names, the .ele body, the check made before a file is added.
+
+#include <filesystem>
+#include <span>
+
+#include "cavity/core/mesh_io.h"
+
+namespace cavity::core {
+
+/// A tetrahedron naming a point that does not exist would make a file no reader can use: refuse
+/// it before anything is committed. \throws Error naming `file`, the tetrahedron and the point.
+/// PREFIX + suffix (".node", ".ele"...): the suffix is appended, never substituted.
+std::filesystem::path with_suffix(const std::filesystem::path& prefix, const char* suffix);
+
+/// The body of a TetGen .ele file; `engine_orientation`: `tets` have orient3d > 0 and are
+/// mirrored to positive volume, else they have positive volume already.
+void write_ele(AtomicFileGroup::Writer& out,
+               const PointSet& points,
+               std::span<const Tet> tets,
+               bool engine_orientation);
+
+void check_tets(const std::filesystem::path& file,
+                const PointSet& points,
+                std::span<const Tet> tets);
+
+}  // namespace cavity::core

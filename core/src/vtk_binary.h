@@ -1,0 +1,40 @@
+#pragma once
+
+// The payload of a VTK XML DataArray in format="binary": base64 text, zlib-compressed in blocks,
+// as vtkZLibDataCompressor writes it with header_type="UInt64".
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace cavity::core {
+
+/// Collects the raw little-endian bytes of one array and encodes them. Memory: the compressed
+/// blocks of the array, typically a third of the raw size for connectivity and coordinates.
+class VtkBinaryArray {
+public:
+    /// Appends the bytes of a value (the writers call it with fixed-width little-endian types).
+    template <typename T>
+    void append(T value) {
+        bytes(std::string_view(reinterpret_cast<const char*>(&value), sizeof value));
+    }
+
+    /// The base64 text of the header (block count, block size, last block size, compressed
+    /// sizes), then that of the compressed blocks: VTK decodes the two separately.
+    std::string encode();
+
+private:
+    void bytes(std::string_view raw);
+    void compress_block();
+
+    std::string block_;            // raw bytes not yet compressed
+    std::string compressed_;       // the compressed blocks, end to end
+    std::string sizes_;            // the header's compressed sizes, as UInt64
+    std::size_t block_count_ = 0;  // full and partial blocks compressed so far
+    std::size_t last_block_ = 0;   // raw size of the latest block
+};
+
+/// Standard base64 (RFC 4648, with '=' padding).
+std::string base64(std::string_view raw);
+
+}  // namespace cavity::core
