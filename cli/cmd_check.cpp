@@ -1,6 +1,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cavity/core/cdt_validate.h"
 #include "cavity/core/error.h"
@@ -8,8 +9,10 @@
 #include "cavity/core/orientation.h"
 #include "cavity/core/plc.h"
 #include "cavity/core/point_io.h"
+#include "cavity/core/points_fingerprint.h"
 #include "cavity/core/validate.h"
 #include "commands.h"
+#include "point_ids.h"
 
 namespace cavity::cli {
 
@@ -19,6 +22,7 @@ struct CheckArgs {
     std::string points;
     std::string mesh;
     std::string poly;
+    std::vector<std::uint64_t> deleted;
     bool weighted = false;
     bool quiet = false;
 };
@@ -43,6 +47,7 @@ void run_cdt_check(const CheckArgs& args) {
                               args.poly);
         }
     }
+    core::check_points_fingerprint(args.mesh, args.points, points);
     const auto tets = core::engine_orientation_from_file(
         args.mesh, plc.points, core::read_ele(args.mesh, plc.points.index_base));
     const core::CdtValidation report = core::validate_cdt(plc, tets);
@@ -67,9 +72,11 @@ void run_check(const CheckArgs& args) {
         return;
     }
     const core::PointSet points = core::read_points(args.points, args.weighted);
+    core::check_points_fingerprint(args.mesh, args.points, points);
     const auto tets = core::engine_orientation_from_file(
         args.mesh, points, core::read_ele(args.mesh, points.index_base));
-    const core::ValidationReport report = core::validate(points, tets);
+    const core::ValidationReport report =
+        core::validate(points, tets, zero_based_ids(points, args.deleted, "--deleted"));
     if (!args.quiet) {
         std::printf(
             "%zu points: %zu vertices, %zu edges, %zu triangles (%zu on the hull), %zu tetrahedra; "
@@ -107,6 +114,11 @@ void add_check_command(CLI::App& app) {
     cmd->add_option("--poly", args->poly,
                     "check a constrained Delaunay tetrahedralization of this PLC (TetGen .poly); "
                     "the point file must list the same points as the PLC");
+    cmd->add_option("--deleted",
+                    args->deleted,
+                    "points removed by `cavity triangulate --delete` (the same comma-separated "
+                    "list): the mesh must be the triangulation of the other points")
+        ->delimiter(',');
     cmd->add_flag("--quiet", args->quiet, "print only problems");
     cmd->callback([args] { run_check(*args); });
 }

@@ -17,6 +17,7 @@
 #include "cavity/core/vertex_deletion.h"
 #include "commands.h"
 #include "json_writer.h"
+#include "point_ids.h"
 #include "progress_bar.h"
 
 namespace cavity::cli {
@@ -192,23 +193,11 @@ void report_skipped(const core::PointSet& points, const core::Triangulation& tri
 
 /// --delete: removes the listed points (numbered like the input) from the triangulation by
 /// vertex deletion (gift-wrapping each star), keeping the instrumentation counters.
-std::vector<std::uint32_t> zero_based(const core::PointSet& points,
-                                      const std::vector<std::uint64_t>& listed) {
-    std::vector<std::uint32_t> ids;
-    for (std::uint64_t id : listed) {
-        const auto base = static_cast<std::uint64_t>(points.index_base);
-        if (id < base || id - base >= points.size()) {
-            throw core::Error("--delete: point " + std::to_string(id) + " is not in " + points.source);
-        }
-        ids.push_back(static_cast<std::uint32_t>(id - base));
-    }
-    return ids;
-}
-
 core::Triangulation delete_listed(const core::PointSet& points,
                                   const core::Triangulation& tri,
                                   const std::vector<std::uint64_t>& listed) {
-    core::Triangulation result = core::delete_vertices(points, tri, zero_based(points, listed));
+    core::Triangulation result =
+        core::delete_vertices(points, tri, zero_based_ids(points, listed, "--delete"));
     result.counters = tri.counters;
     result.counters.duplicates = result.duplicates.size();
     result.counters.redundant = result.redundant.size();
@@ -256,7 +245,7 @@ void run_triangulate(const TriangulateArgs& args) {
     if (args.check) {
         clock = std::chrono::steady_clock::now();
         const core::ValidationReport report =
-            core::validate(points, tri.tets, zero_based(points, args.delete_ids));
+            core::validate(points, tri.tets, zero_based_ids(points, args.delete_ids, "--delete"));
         timings.check_s = seconds_since(clock);
         if (!report.ok()) {
             std::string message = "validation failed (" + std::to_string(report.problem_count) +
@@ -312,9 +301,12 @@ void add_triangulate_command(CLI::App& app) {
                   "BRIO: do not reverse the curve order on alternate rounds");
     cmd->add_flag("--weighted", args->weighted,
                   "weighted Delaunay: the first .node attribute (or 4th column) is the weight");
-    cmd->add_option("--delete", args->delete_ids,
-                    "after triangulating, delete these points (input numbering, comma-separated) "
-                    "by vertex deletion")
+    cmd->add_option(
+           "--delete",
+           args->delete_ids,
+           "after triangulating, delete these points (input numbering, comma-separated) "
+           "by vertex deletion; the output keeps the input's numbering and all its points, "
+           "so check it with `cavity check --deleted` and the same list")
         ->delimiter(',');
     cmd->add_flag("--check", args->check, "validate the result exactly before writing it");
     cmd->add_option("--stats", args->stats,

@@ -8,6 +8,7 @@ target_sources(cavity_core PRIVATE
   src/point_io.cpp
   src/read_ele.cpp
   src/write_mesh.cpp
+  src/points_fingerprint.cpp
   src/write_tetgen_adjacency.cpp
   src/write_vtu.cpp
   src/vtk_binary.cpp

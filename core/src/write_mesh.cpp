@@ -3,6 +3,7 @@
 #include "cavity/core/atomic_file.h"
 #include "cavity/core/error.h"
 #include "cavity/core/mesh_io.h"
+#include "cavity/core/points_fingerprint.h"
 #include "mesh_checks.h"
 #include "point_writers.h"
 #include "text_output.h"
@@ -18,9 +19,12 @@ void write_ele(AtomicFileGroup::Writer& out,
                std::span<const Tet> tets,
                bool engine_orientation) {
     const auto base = static_cast<std::uint64_t>(points.index_base);
+    // TetGen and every .ele reader skip '#' comments; `cavity check` reads this one, at the end of
+    // the header line so that line-oriented tools still find the tetrahedra from line 2, to tell
+    // a .node and a .ele of two different runs apart.
     std::string text;
     append_uint(text, tets.size());
-    text += " 4 0\n";
+    text += " 4 0  " + points_fingerprint_comment(points_fingerprint(points)) + '\n';
     for (std::size_t t = 0; t < tets.size(); ++t) {
         append_uint(text, t + base);
         for (const std::uint32_t v : engine_orientation ? swap_handedness(tets[t]) : tets[t]) {

@@ -31,6 +31,9 @@ for dist in cube grid; do
     fail "$dist: cavity check rejects cavity's mesh: $(head -3 err.txt)"
 done
 
+# TetGen reads cavity's .ele back (-r), header comment included.
+tetgen -rQ cube.cavity >/dev/null || fail "tetgen -r cannot read cavity's mesh"
+
 # On points in general position the Delaunay triangulation is unique: the same tetrahedra.
 sorted() { awk 'NR > 1 && $1 !~ /^#/ && NF >= 5 { print $2; print $3; print $4; print $5 }' "$1" |
   "$python" -c 'import sys; v = sys.stdin.read().split()

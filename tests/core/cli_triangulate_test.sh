@@ -76,6 +76,14 @@ awk 'NR>1 && !/^#/ {for (i=2;i<=5;i++) if ($i==0 || $i==7 || $i==62 || $i==124) 
   || fail "delete: a deleted point is still a vertex"
 "$cavity" triangulate grid.node -o bad_delete --delete 125 --quiet 2>err.txt && fail "delete: out-of-range id accepted"
 grep -q "not in" err.txt || fail "delete: message '$(cat err.txt)'"
+# The mesh after --delete is checkable: with the same list it is valid, without it the deleted
+# points are reported missing, and a wrong list is refused.
+"$cavity" check deleted.node deleted.ele --deleted 0,7,62,124 --quiet ||
+  fail "delete: check --deleted rejects the mesh"
+"$cavity" check deleted.node deleted.ele --quiet 2>/dev/null &&
+  fail "delete: check accepts a mesh missing four points"
+"$cavity" check deleted.node deleted.ele --deleted 0,7,62 --quiet 2>/dev/null &&
+  fail "delete: check accepts a wrong --deleted list"
 
 # cavity cdt and cavity check --poly: a box split by a square through its middle.
 cat > box.poly <<'POLY'
@@ -117,6 +125,25 @@ awk 'NR==2 {t=$3; $3=$4; $4=t} {print}' box.ele > box_flipped.ele
 # VTU output.
 "$cavity" triangulate cube.node -o cube --format vtu --quiet || fail "vtu: failed"
 grep -q "UnstructuredGrid" cube.vtu || fail "vtu: not a VTK XML file"
+
+# A .node and a .ele of two different runs (two runs on one prefix, or one killed between its
+# renames) are told apart by the points fingerprint in the .ele's header comment.
+"$cavity" generate cube 50 --seed 1 -o run1.node >/dev/null
+"$cavity" generate cube 50 --seed 2 -o run2.node >/dev/null
+"$cavity" triangulate run1.node -o run1 --quiet || fail "run1: failed"
+"$cavity" triangulate run2.node -o run2 --quiet || fail "run2: failed"
+"$cavity" check run2.node run1.ele --quiet 2>err.txt && fail "check accepts a .ele of other points"
+grep -q "run1.ele: was written for other points than those of run2.node" err.txt ||
+  fail "mixed runs: message '$(cat err.txt)'"
+"$cavity" check run1.node run1.ele --quiet || fail "check rejects its own run"
+
+# An interrupted run leaves no half-set: a --stats path that cannot be written stops the run
+# before any mesh file is committed, and an earlier mesh stays as it was.
+cp run1.ele before.ele
+"$cavity" triangulate run2.node -o run1 --stats no_such_dir/s.json --quiet 2>err.txt &&
+  fail "an unwritable --stats path is accepted"
+cmp -s run1.ele before.ele || fail "a failed run replaced the .ele"
+"$cavity" check run1.node run1.ele --quiet || fail "a failed run broke the earlier mesh"
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures failure(s)"

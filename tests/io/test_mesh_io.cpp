@@ -4,12 +4,15 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "cavity/core/atomic_file.h"
 #include "cavity/core/error.h"
 #include "cavity/core/mesh_io.h"
 #include "cavity/core/orientation.h"
 #include "cavity/core/point_io.h"
+#include "cavity/core/points_fingerprint.h"
 #include "temp_dir.h"
 
 namespace cavity::core {
@@ -69,7 +72,9 @@ TEST(MeshIo, TetgenRoundTrip) {
             EXPECT_EQ(file.positive, engine.negative);
             EXPECT_EQ(file.negative, engine.positive);
             const std::string ele = contents(dir.path() / "mesh.ele");
-            EXPECT_EQ(ele.substr(0, ele.find('\n')), "6 4 0");
+            EXPECT_EQ(ele.substr(0, ele.find('\n')),
+                      "6 4 0  " + points_fingerprint_comment(points_fingerprint(set)));
+            EXPECT_EQ(read_points_fingerprint(dir.path() / "mesh.ele"), points_fingerprint(set));
             const std::string first = base == 0 ? "\n0 1 0 3 7\n" : "\n1 2 1 4 8\n";
             EXPECT_NE(ele.find(first), std::string::npos) << ele;
         }
@@ -159,6 +164,28 @@ TEST(AtomicFile, NothingVisibleBeforeCommitNothingLeftWithout) {
     EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a.txt", "b.txt"}));
     EXPECT_EQ(contents(dir.path() / "a.txt"), "alpha");
     EXPECT_EQ(contents(dir.path() / "b.txt"), std::string(200000, 'b'));
+}
+
+// A writer killed before it could clean up leaves a temporary named after its process; the next
+// group writing the same target removes it once that process is gone, and no other.
+TEST(AtomicFile, StaleTemporariesOfDeadWritersAreRemoved) {
+    TempDir dir;
+    const pid_t child = ::fork();
+    if (child == 0) {
+        ::_exit(0);
+    }
+    ASSERT_GT(child, 0);
+    ASSERT_EQ(::waitpid(child, nullptr, 0), child);  // reaped: the pid names no process now
+    const std::string dead = ".a.txt.tmp." + std::to_string(child) + ".0";
+    const std::string alive = ".a.txt.tmp." + std::to_string(::getppid()) + ".3";
+    const std::string other = ".b.txt.tmp." + std::to_string(child) + ".0";
+    dir.write(dead, "half");
+    dir.write(alive, "busy");
+    dir.write(other, "not ours");
+    AtomicFileGroup group;
+    group.add(dir.path() / "a.txt").write("alpha");
+    group.commit();
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{alive, other, "a.txt"}));
 }
 
 TEST(AtomicFile, FailedRenameIsAnError) {

@@ -14,8 +14,12 @@ namespace cavity::core {
 /// into place. A group destroyed without commit(), for instance by an exception thrown while
 /// writing, removes its temporaries and leaves any existing targets untouched.
 ///
-/// The renames themselves are one per file: should the system fail between two of them (a
-/// target turned into a directory meanwhile, say), the files already renamed stay.
+/// Concurrent runs: commit() holds an exclusive lock (flock) on each target directory while it
+/// renames, so two groups committing the same names never interleave: the last one's set wins
+/// whole. The renames themselves are one per file: a process killed between two of them leaves
+/// files of two runs side by side, which is why the .ele carries the fingerprint of its points
+/// (write_tetgen) and `cavity check` compares it with the .node. Temporaries of a killed writer
+/// (its process gone) are removed by the next group that adds the same target.
 class AtomicFileGroup {
 public:
     /// One temporary file being written; output is buffered and flushed by commit().
@@ -23,6 +27,8 @@ public:
     public:
         /// Appends bytes. \throws Error naming the target when the system refuses the write.
         void write(std::string_view bytes);
+
+        const std::filesystem::path& target() const { return target_; }
 
         Writer(const Writer&) = delete;
         Writer& operator=(const Writer&) = delete;
