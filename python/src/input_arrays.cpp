@@ -17,13 +17,22 @@ std::string shape_text(const py::array& a) {
     return text + (a.ndim() == 1 ? ",)" : ")");
 }
 
-/// numpy's own conversion (ensure() clears the Python error when it fails).
+/// numpy's own conversion, in two steps so that each failure keeps its meaning: numpy.asarray
+/// first (its MemoryError, or its error for ragged input, reaches the caller unchanged), then a
+/// check of the element kind (numpy would silently drop the imaginary part of complex numbers and
+/// parse strings), then the cast to contiguous doubles (again with numpy's own errors).
 DoubleArray as_doubles(const py::handle& array, const char* name) {
-    DoubleArray a = DoubleArray::ensure(array);
-    if (!a) {
-        throw py::value_error(std::string(name) + " must be an array of numbers");
+    const py::array raw = py::module_::import("numpy").attr("asarray")(array);
+    const char kind = raw.dtype().kind();
+    if (kind == 'c') {
+        throw py::value_error(std::string(name) + " must be real numbers, got complex values (" +
+                              py::str(raw.dtype()).cast<std::string>() + ")");
     }
-    return a;
+    if (kind != 'f' && kind != 'i' && kind != 'u') {
+        throw py::value_error(std::string(name) + " must be an array of numbers, got dtype " +
+                              py::str(raw.dtype()).cast<std::string>());
+    }
+    return DoubleArray(raw);
 }
 
 }  // namespace

@@ -27,6 +27,28 @@ def test_wrong_shape_is_named(shape):
 def test_not_numbers():
     with pytest.raises(ValueError, match="array of numbers"):
         cavity.Delaunay("not points")
+    with pytest.raises(ValueError, match="array of numbers, got dtype object"):
+        cavity.Delaunay(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, None]], dtype=object))
+
+
+@pytest.mark.parametrize("make", [lambda p: p + 0j, lambda p: (p + 1j).tolist()])
+def test_complex_points_are_refused_not_truncated(make):
+    with pytest.raises(ValueError, match="points must be real numbers, got complex"):
+        cavity.Delaunay(make(cube()))
+    with pytest.raises(ValueError, match="weights must be real numbers, got complex"):
+        cavity.Delaunay(cube(), np.zeros(8) + 0j)
+
+
+class _NoMemory:
+    """An array-like whose conversion runs out of memory, as a huge input would."""
+
+    def __array__(self, dtype=None, copy=None):
+        raise MemoryError("cannot allocate the points")
+
+
+def test_memory_error_stays_a_memory_error():
+    with pytest.raises(MemoryError, match="cannot allocate the points"):
+        cavity.Delaunay(_NoMemory())
 
 
 @pytest.mark.parametrize("points", [np.zeros((0, 3)), np.ones((7, 3)), cube()[:3]])
