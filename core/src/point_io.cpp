@@ -26,18 +26,36 @@ std::string lower_extension(const std::filesystem::path& file) {
 }  // namespace
 
 void write_node(AtomicFileGroup::Writer& out, const PointSet& points) {
+    // A .node input's attributes and markers are written back as read (the weight among them,
+    // as attribute 0); points from elsewhere carry the weight as their only attribute.
+    const bool own_attributes = points.attribute_count > 0;
+    const std::size_t attribute_count = own_attributes      ? points.attribute_count
+                                        : points.weighted() ? 1
+                                                            : 0;
+    const bool markers = !points.markers.empty();
     std::string text;
     append_uint(text, points.size());
-    text += points.weighted() ? " 3 1 0\n" : " 3 0 0\n";
+    text += " 3 ";
+    append_uint(text, attribute_count);
+    text += markers ? " 1\n" : " 0\n";
     for (std::size_t i = 0; i < points.size(); ++i) {
         append_uint(text, i + static_cast<std::size_t>(points.index_base));
         for (const double c : {points.points[i].x, points.points[i].y, points.points[i].z}) {
             text += ' ';
             append_double(text, c);
         }
-        if (points.weighted()) {
+        if (own_attributes) {
+            for (std::size_t a = 0; a < attribute_count; ++a) {
+                text += ' ';
+                append_double(text, points.attributes[i * attribute_count + a]);
+            }
+        } else if (points.weighted()) {
             text += ' ';
             append_double(text, points.weights[i]);
+        }
+        if (markers) {
+            text += ' ';
+            append_int(text, points.markers[i]);
         }
         text += '\n';
         out.write(text);

@@ -40,6 +40,8 @@ PointSet read_node(const std::string& file, std::string_view bytes, bool weighte
 
     PointSet result;
     result.source = file;
+    result.attribute_count = attributes;
+    result.attributes.reserve(count * attributes);
     result.points.reserve(count);
     if (weighted) {
         result.weights.reserve(count);
@@ -73,8 +75,15 @@ PointSet read_node(const std::string& file, std::string_view bytes, bool weighte
         result.points.push_back({source.number(tokens[1], line, "x"),
                                  source.number(tokens[2], line, "y"),
                                  source.number(tokens[3], line, "z")});
+        for (std::size_t a = 0; a < attributes; ++a) {
+            result.attributes.push_back(source.number(tokens[4 + a], line, "attribute"));
+        }
         if (weighted) {
-            result.weights.push_back(source.number(tokens[4], line, "weight"));
+            result.weights.push_back(result.attributes[i * attributes]);
+        }
+        if (markers == 1) {
+            result.markers.push_back(
+                source.integer(tokens[4 + attributes], line, "boundary marker"));
         }
     }
     if (lines.next()) {

@@ -118,4 +118,15 @@ std::uint64_t TextSource::count(std::string_view token,
     return value;
 }
 
+std::int64_t TextSource::integer(std::string_view token,
+                                 std::size_t line,
+                                 std::string_view what) const {
+    std::int64_t value = 0;
+    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (error != std::errc() || end != token.data() + token.size()) {
+        fail(line, std::string(what) + ": not a 64-bit integer: '" + std::string(token) + "'");
+    }
+    return value;
+}
+
 }  // namespace cavity::core

@@ -56,6 +56,8 @@ public:
     double number(std::string_view token, std::size_t line, std::string_view what) const;
     /// A non-negative decimal integer.
     std::uint64_t count(std::string_view token, std::size_t line, std::string_view what) const;
+    /// A decimal integer of either sign that fits 64 bits (a boundary marker).
+    std::int64_t integer(std::string_view token, std::size_t line, std::string_view what) const;
 
 private:
     std::string file_;

@@ -22,4 +22,10 @@ inline void append_uint(std::string& out, std::uint64_t value) {
     out.append(buffer, result.ptr);
 }
 
+inline void append_int(std::string& out, std::int64_t value) {
+    char buffer[24];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    out.append(buffer, result.ptr);
+}
+
 }  // namespace cavity::core

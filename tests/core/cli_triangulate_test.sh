@@ -126,6 +126,19 @@ awk 'NR==2 {t=$3; $3=$4; $4=t} {print}' box.ele > box_flipped.ele
 "$cavity" triangulate cube.node -o cube --format vtu --quiet || fail "vtu: failed"
 grep -q "UnstructuredGrid" cube.vtu || fail "vtu: not a VTK XML file"
 
+# The input's point attributes and boundary markers survive into the output .node, exactly; with
+# --weighted the weight is the first of them.
+printf '%s\n' '# cube corners, two attributes and a marker' '8 3 2 1' \
+  '1 0 0 0 0.5 -7 3' '2 1 0 0 0.25 1e-300 0' '3 0 1 0 0.125 2 -1' '4 1 1 0 0 3 3' \
+  '5 0 0 1 0 4 3' '6 1 0 1 0 5 3' '7 0 1 1 0 6 0' '8 1 1 1 0.75 7.5 2' > attr.node
+for w in "" --weighted; do
+  "$cavity" triangulate attr.node -o attr_out $w --quiet || fail "attributes$w: failed"
+  tail -n +2 attr_out.node | awk '{ printf "%s %s %s %s %s %s %s\n", $1, $2, $3, $4, $5, $6, $7 }' > got.txt
+  tail -n +3 attr.node > want.txt
+  cmp -s got.txt want.txt || fail "attributes$w: output .node differs: $(diff want.txt got.txt | head -3)"
+  [ "$(head -1 attr_out.node)" = "8 3 2 1" ] || fail "attributes$w: header '$(head -1 attr_out.node)'"
+done
+
 # A .node and a .ele of two different runs (two runs on one prefix, or one killed between its
 # renames) are told apart by the points fingerprint in the .ele's header comment.
 "$cavity" generate cube 50 --seed 1 -o run1.node >/dev/null

@@ -19,6 +19,12 @@ struct PointSet {
     std::vector<double> weights;  ///< empty for an unweighted set, else one weight per point
     int index_base = 0;
     std::string source;  ///< file name or generator description, for messages
+    /// A .node file's attributes, kept for the output .node: `attribute_count` per point, row by
+    /// row (with --weighted the weight is attribute 0 and is also in `weights`). Empty otherwise.
+    std::size_t attribute_count = 0;
+    std::vector<double> attributes;
+    /// A .node file's boundary markers, one per point, kept for the output .node; else empty.
+    std::vector<std::int64_t> markers;
 
     bool weighted() const { return !weights.empty(); }
     std::size_t size() const { return points.size(); }
