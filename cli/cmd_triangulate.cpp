@@ -1,5 +1,6 @@
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -103,7 +104,8 @@ void write_stats(core::AtomicFileGroup& files,
     json.begin_object();
     json.string("input", args.input);
     json.integer("points", points.size());
-    json.string("weighted", args.weighted ? "yes" : "no");
+    json.boolean("weighted", args.weighted);
+    json.boolean("checked", args.check);
     json.string("order", args.order);
     json.string("locate", args.locate);
     json.string("storage", args.storage);
@@ -274,6 +276,44 @@ void run_triangulate(const TriangulateArgs& args) {
     }
 }
 
+/// `-o mesh.vtu --format vtu` means the prefix `mesh`, not `mesh.vtu.vtu`; likewise a prefix ending
+/// in .node or .ele for TetGen files.
+std::string output_prefix(const std::string& prefix, const std::string& format) {
+    const auto strip = [&prefix](std::string_view extension) {
+        return prefix.size() > extension.size() &&
+               prefix.compare(prefix.size() - extension.size(), extension.size(), extension) == 0;
+    };
+    for (const std::string_view extension : format == "vtu"
+                                                ? std::vector<std::string_view>{".vtu"}
+                                                : std::vector<std::string_view>{".node", ".ele"}) {
+        if (strip(extension)) {
+            return prefix.substr(0, prefix.size() - extension.size());
+        }
+    }
+    return prefix;
+}
+
+/// A --stats path that names the input or one of the run's mesh files would overwrite it: refused
+/// before anything is computed.
+void refuse_stats_over_a_file_of_the_run(const TriangulateArgs& args) {
+    if (args.stats.empty()) {
+        return;
+    }
+    std::vector<std::string> files = {args.input};
+    for (const char* suffix : {".node", ".ele", ".neigh", ".face", ".vtu"}) {
+        files.push_back(args.prefix + suffix);
+    }
+    std::error_code error;
+    const auto stats = std::filesystem::weakly_canonical(args.stats, error);
+    for (const std::string& file : files) {
+        std::error_code other_error;
+        if (!error && std::filesystem::weakly_canonical(file, other_error) == stats &&
+            !other_error) {
+            throw CLI::ValidationError("--stats", "'" + args.stats + "' would overwrite " + file);
+        }
+    }
+}
+
 }  // namespace
 
 void add_triangulate_command(CLI::App& app) {
@@ -283,7 +323,11 @@ void add_triangulate_command(CLI::App& app) {
         "Exact Delaunay (or weighted Delaunay) triangulation of a point file (.node, .xyz/.csv, "
         ".ply); writes PREFIX.node and PREFIX.ele (TetGen) or PREFIX.vtu");
     cmd->add_option("input", args->input, "input points")->required();
-    cmd->add_option("-o,--output", args->prefix, "output prefix")->required();
+    cmd->add_option("-o,--output",
+                    args->prefix,
+                    "output prefix: PREFIX.node and PREFIX.ele, or PREFIX.vtu (a prefix ending in "
+                    "the format's extension is taken without it)")
+        ->required();
     cmd->add_option("--order", args->order, "insertion order")
         ->check(CLI::IsMember({"input", "random", "brio", "hilbert", "zorder"}))
         ->capture_default_str();
@@ -326,6 +370,8 @@ void add_triangulate_command(CLI::App& app) {
                   args->ascii,
                   "with --format vtu: ASCII arrays instead of zlib-compressed base64");
     cmd->callback([args] {
+        args->prefix = output_prefix(args->prefix, args->format);
+        refuse_stats_over_a_file_of_the_run(*args);
         if (args->format != "tetgen" && (args->neighbors || args->hull_faces)) {
             throw CLI::ValidationError("--neigh/--faces", "TetGen files: not with --format vtu");
         }

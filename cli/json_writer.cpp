@@ -89,6 +89,11 @@ void JsonWriter::string(std::string_view key, std::string_view value) {
     out_ += quoted(value);
 }
 
+void JsonWriter::boolean(std::string_view key, bool value) {
+    prefix(key);
+    out_ += value ? "true" : "false";
+}
+
 void JsonWriter::element(std::uint64_t value) {
     if (!first_) {
         out_ += ",";

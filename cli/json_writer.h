@@ -17,6 +17,7 @@ public:
     void number(std::string_view key, double value);
     void integer(std::string_view key, std::uint64_t value);
     void string(std::string_view key, std::string_view value);
+    void boolean(std::string_view key, bool value);
     void element(std::uint64_t value);
 
     const std::string& text() const { return out_; }

@@ -139,6 +139,20 @@ for w in "" --weighted; do
   [ "$(head -1 attr_out.node)" = "8 3 2 1" ] || fail "attributes$w: header '$(head -1 attr_out.node)'"
 done
 
+# A prefix ending in the format's extension is not doubled; --stats over the input or an output
+# file is refused before anything runs; --stats writes JSON booleans.
+"$cavity" triangulate cube.node -o named.vtu --format vtu --quiet || fail "named.vtu: failed"
+[ -f named.vtu ] && [ ! -e named.vtu.vtu ] || fail "-o named.vtu wrote named.vtu.vtu"
+"$cavity" triangulate cube.node -o named.node --quiet || fail "named.node: failed"
+[ -f named.ele ] && [ ! -e named.node.ele ] || fail "-o named.node wrote named.node.ele"
+for target in named.ele cube.node ./named.node; do
+  "$cavity" triangulate cube.node -o named --stats "$target" --quiet 2>err.txt &&
+    fail "--stats $target accepted"
+  grep -q "would overwrite" err.txt || fail "--stats $target: message '$(cat err.txt)'"
+done
+"$cavity" triangulate cube.node -o named --stats named.json --quiet || fail "stats: failed"
+grep -q '"weighted": false' named.json || fail "stats: weighted is not a JSON boolean"
+
 # A .node and a .ele of two different runs (two runs on one prefix, or one killed between its
 # renames) are told apart by the points fingerprint in the .ele's header comment.
 "$cavity" generate cube 50 --seed 1 -o run1.node >/dev/null
