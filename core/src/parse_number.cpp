@@ -1,8 +1,10 @@
 #include "cavity/core/parse_number.h"
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 namespace cavity::core {
@@ -25,6 +27,34 @@ bool literal_is_zero(std::string_view token) {
         }
     }
     return true;
+}
+
+// A decimal integer literal ("-12", "+0034") whose value the double does not hold exactly: beyond
+// 2^53 most integers round. A user who writes an integer expects it exact, so such a literal is
+// refused; returns the nearest double's digits for the message, or nothing when exact or when
+// the token is not a plain integer.
+std::optional<std::string> inexact_integer(std::string_view token, double value) {
+    std::string_view digits = token;
+    if (!digits.empty() && (digits[0] == '-' || digits[0] == '+')) {
+        digits.remove_prefix(1);
+    }
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string_view::npos) {
+        return std::nullopt;
+    }
+    if (std::fabs(value) < 9007199254740992.0) {  // 2^53: below it every integer is exact
+        return std::nullopt;
+    }
+    while (digits.size() > 1 && digits[0] == '0') {
+        digits.remove_prefix(1);
+    }
+    char buffer[400];
+    const auto result = std::to_chars(
+        buffer, buffer + sizeof buffer, std::fabs(value), std::chars_format::fixed, 0);
+    const std::string_view exact(buffer, static_cast<std::size_t>(result.ptr - buffer));
+    if (exact == digits) {
+        return std::nullopt;
+    }
+    return std::string(value < 0 ? "-" : "") + std::string(exact);
 }
 
 }  // namespace
@@ -51,6 +81,11 @@ ParsedNumber parse_number(std::string_view token) {
     }
     if (errno == ERANGE && value == 0.0 && !literal_is_zero(token)) {
         return {std::nullopt, "underflows to zero, out of the range of a double: '" + text + "'"};
+    }
+    if (const auto nearest = inexact_integer(token, value)) {
+        return {std::nullopt,
+                "the integer '" + text + "' has no exact double (beyond 2^53; the nearest is " +
+                    *nearest + "): refused rather than rounded"};
     }
     return {value, {}};
 }

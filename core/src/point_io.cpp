@@ -84,6 +84,10 @@ void write_xyz(AtomicFileGroup::Writer& out, const PointSet& points, char separa
 PointSet read_points(const std::filesystem::path& file, bool weighted) {
     const std::string extension = lower_extension(file);
     const std::string name = file.string();
+    std::error_code error;
+    if (std::filesystem::is_directory(file, error)) {
+        throw Error(located_message(name, std::nullopt, "is a directory, not a point file"));
+    }
     if (extension != ".node" && extension != ".xyz" && extension != ".csv" && extension != ".txt" &&
         extension != ".ply") {
         throw Error(located_message(

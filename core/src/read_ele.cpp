@@ -17,12 +17,19 @@ std::vector<Tet> read_ele(const std::filesystem::path& file, int index_base) {
     if (header.size() < 2 || header.size() > 3) {
         source.fail(header_line, "expected '<#tets> <nodes per tet> [<#attributes>]'");
     }
+    // The number of attributes is bounded by the file's size before it is added to anything; the
+    // loop below stops where the file ends, whatever the number of tets claims.
     const std::uint64_t count = source.count(header[0], header_line, "number of tets");
     if (source.count(header[1], header_line, "nodes per tet") != 4) {
         source.fail(header_line, "only linear tets (4 nodes per tet) are supported");
     }
-    const std::uint64_t attributes =
-        header.size() > 2 ? source.count(header[2], header_line, "number of attributes") : 0;
+    const std::uint64_t attributes = header.size() > 2
+                                         ? source.count_at_most(header[2],
+                                                                header_line,
+                                                                "number of attributes",
+                                                                bytes.size(),
+                                                                "the file's size in bytes")
+                                         : 0;
 
     const std::uint64_t base = static_cast<std::uint64_t>(index_base);
     const std::uint64_t largest = std::numeric_limits<std::uint32_t>::max() + base;

@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "point_readers.h"
 #include "text_input.h"
 
@@ -15,18 +17,24 @@ PointSet read_node(const std::string& file, std::string_view bytes, bool weighte
     if (header.size() > 4) {
         source.fail(header_line, "the .node header has more than 4 fields");
     }
-    const std::uint64_t count = source.count(header[0], header_line, "number of points");
+    // Every count is bounded before it is used: no header field can exceed the file's size in
+    // bytes, so no sum of counts wraps, and memory is reserved for no more points than the file
+    // can hold; a count nearer the truth fails later, naming the line where the file ends.
+    const std::uint64_t count = source.count_at_most(
+        header[0], header_line, "number of points", 0xFFFF'FFFFu, "32-bit indices can number");
     const std::uint64_t dim =
         header.size() > 1 ? source.count(header[1], header_line, "dimension") : 3;
-    const std::uint64_t attributes =
-        header.size() > 2 ? source.count(header[2], header_line, "number of attributes") : 0;
+    const std::uint64_t attributes = header.size() > 2
+                                         ? source.count_at_most(header[2],
+                                                                header_line,
+                                                                "number of attributes",
+                                                                bytes.size(),
+                                                                "the file's size in bytes")
+                                         : 0;
     const std::uint64_t markers =
         header.size() > 3 ? source.count(header[3], header_line, "number of boundary markers") : 0;
     if (count == 0) {
         source.fail(header_line, "the header declares no points");
-    }
-    if (count > 0xFFFF'FFFFu) {
-        source.fail(header_line, "more points than 32-bit indices can number");
     }
     if (dim != 3) {
         source.fail(header_line, "dimension is " + std::to_string(dim) + ", expected 3");
@@ -41,10 +49,13 @@ PointSet read_node(const std::string& file, std::string_view bytes, bool weighte
     PointSet result;
     result.source = file;
     result.attribute_count = attributes;
-    result.attributes.reserve(count * attributes);
-    result.points.reserve(count);
+    // A point line takes at least 7 + 2 * attributes bytes.
+    const std::uint64_t room =
+        std::min<std::uint64_t>(count, bytes.size() / (7 + 2 * attributes) + 1);
+    result.attributes.reserve(room * attributes);
+    result.points.reserve(room);
     if (weighted) {
-        result.weights.reserve(count);
+        result.weights.reserve(room);
     }
     const std::size_t fields = 4 + attributes + markers;
     for (std::uint64_t i = 0; i < count; ++i) {

@@ -1,8 +1,10 @@
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "point_readers.h"
@@ -74,6 +76,40 @@ std::size_t type_size(Type type) {
     return 0;
 }
 
+bool is_integer(Type type) {
+    return type != Type::kFloat32 && type != Type::kFloat64;
+}
+
+/// The range of an integer PLY type, for ASCII values that must fit it.
+std::pair<std::int64_t, std::int64_t> integer_range(Type type) {
+    switch (type) {
+        case Type::kInt8:
+            return {-128, 127};
+        case Type::kUInt8:
+            return {0, 255};
+        case Type::kInt16:
+            return {-32768, 32767};
+        case Type::kUInt16:
+            return {0, 65535};
+        case Type::kInt32:
+            return {-2147483648LL, 2147483647};
+        default:
+            return {0, 4294967295LL};
+    }
+}
+
+/// The fewest bytes one instance of `element` takes: binary, its scalars and list lengths; ASCII,
+/// a character and a separator per property.
+std::uint64_t min_instance_bytes(const Element& element, bool ascii) {
+    std::uint64_t bytes = 0;
+    for (const Property& property : element.properties) {
+        bytes +=
+            ascii ? 2
+                  : type_size(property.list_count_type ? *property.list_count_type : property.type);
+    }
+    return bytes;
+}
+
 Type checked_type(const TextSource& source, std::string_view name, std::size_t line) {
     const std::optional<Type> type = parse_type(name);
     if (!type) {
@@ -141,6 +177,11 @@ Header parse_header(const TextSource& source, std::string_view bytes) {
             Property property;
             if (words.size() == 5 && words[1] == "list") {
                 property.list_count_type = checked_type(source, words[2], line);
+                if (!is_integer(*property.list_count_type)) {
+                    source.fail(line,
+                                "a PLY list length must have an integer type, not '" +
+                                    std::string(words[2]) + "'");
+                }
                 property.type = checked_type(source, words[3], line);
                 property.name = std::string(words[4]);
             } else if (words.size() == 3) {
@@ -246,6 +287,8 @@ public:
 
     bool has(std::size_t bytes) const { return data_.size() - pos_ >= bytes; }
 
+    std::size_t remaining() const { return data_.size() - pos_; }
+
     void skip(std::size_t bytes) { pos_ += bytes; }
 
     /// The next value of `type` as a double (exact for every PLY type); the caller checks has().
@@ -299,13 +342,26 @@ public:
         , binary_(data_, header.format == Format::kBigEndian) {}
 
     PointSet read(bool weighted) {
+        // Every declared count is checked against the data before anything is read or reserved:
+        // a header promising more instances than there are bytes is refused by name (a count
+        // nearer the truth fails later, naming the instance where the data ends).
+        for (const Element& element : header_.elements) {
+            if (!element.properties.empty() && element.count > data_.size() + 1) {
+                source_.fail(element.line,
+                             "element '" + element.name + "' declares " +
+                                 std::to_string(element.count) + " instances, more than the " +
+                                 std::to_string(data_.size()) + " bytes of data can hold");
+            }
+        }
         const Element* vertex = nullptr;
+        std::size_t vertex_position = 0;
         for (const Element& element : header_.elements) {
             if (element.name == "vertex") {
                 vertex = &element;
                 break;
             }
             skip_element(element);
+            ++vertex_position;
         }
         if (vertex == nullptr) {
             source_.fail("the PLY file has no vertex element");
@@ -319,7 +375,9 @@ public:
         const VertexLayout layout = vertex_layout(source_, *vertex, weighted);
         PointSet result;
         result.source = source_.file();
-        result.points.reserve(vertex->count);
+        const std::uint64_t least =
+            std::max<std::uint64_t>(min_instance_bytes(*vertex, ascii()), 1);
+        result.points.reserve(std::min<std::uint64_t>(vertex->count, data_.size() / least + 1));
         for (std::uint64_t i = 0; i < vertex->count; ++i) {
             double values[4] = {0.0, 0.0, 0.0, 0.0};  // x, y, z, weight
             for (std::size_t p = 0; p < vertex->properties.size(); ++p) {
@@ -339,11 +397,28 @@ public:
                 result.weights.push_back(values[3]);
             }
         }
+        // The rest of the file must be exactly what the header declares: a count that disagrees
+        // with the payload is refused, not silently ignored.
+        for (std::size_t e = vertex_position + 1; e < header_.elements.size(); ++e) {
+            skip_element(header_.elements[e]);
+        }
+        refuse_trailing_data();
         return result;
     }
 
 private:
     bool ascii() const { return header_.format == Format::kAscii; }
+
+    void refuse_trailing_data() {
+        if (ascii()) {
+            if (ascii_.next()) {
+                source_.fail(ascii_.line(), "data after the elements the header declares");
+            }
+        } else if (binary_.has(1)) {
+            source_.fail(std::to_string(binary_.remaining()) +
+                         " bytes of binary data after the elements the header declares");
+        }
+    }
 
     [[noreturn]] void fail_truncated(const Element& element, std::uint64_t i) const {
         const std::string what = "file ends in " + element.name + " " + std::to_string(i) +
@@ -371,8 +446,10 @@ private:
                 if (!binary_.has(type_size(*property.list_count_type))) {
                     fail_truncated(element, i);
                 }
+                // An integer type (checked in the header), so the value is an exact integer of
+                // at most 32 bits and the conversion is defined.
                 const double length = binary_.read(*property.list_count_type);
-                if (!(length >= 0)) {
+                if (length < 0) {
                     source_.fail(element.name + " " + std::to_string(i) + ": negative list length");
                 }
                 items = static_cast<std::uint64_t>(length);
@@ -391,6 +468,9 @@ private:
     }
 
     void skip_element(const Element& element) {
+        if (element.properties.empty()) {
+            return;  // instances of nothing take no bytes
+        }
         for (std::uint64_t i = 0; i < element.count; ++i) {
             for (const Property& property : element.properties) {
                 skip_property(property, element, i);
@@ -404,6 +484,18 @@ private:
             const auto token = ascii_.next();
             if (!token) {
                 source_.fail(ascii_.line(), "file ends in " + vertex_label(i));
+            }
+            if (is_integer(property.type)) {
+                // The declared type is a promise about the payload: "2.5" or 1e30 under an int
+                // property is refused, not converted.
+                const std::int64_t value = source_.integer(*token, ascii_.line(), what);
+                const auto [low, high] = integer_range(property.type);
+                if (value < low || value > high) {
+                    source_.fail(ascii_.line(),
+                                 what + ": " + std::to_string(value) +
+                                     " is outside the range of its PLY type");
+                }
+                return static_cast<double>(value);
             }
             return source_.number(*token, ascii_.line(), what);
         }

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <limits>
 #include <string>
 
 #include "cavity/core/error.h"
@@ -14,7 +15,8 @@ namespace {
 /// Reads the lines of one .poly file in order, failing with FILE:LINE.
 class PolyParser {
 public:
-    PolyParser(const std::string& file, std::string_view bytes) : source_(file), lines_(bytes) {}
+    PolyParser(const std::string& file, std::string_view bytes)
+        : source_(file), lines_(bytes), size_(bytes.size()) {}
 
     /// The fields of the next data line; `what` says what was expected, for the truncation error.
     std::vector<std::string_view> next(const std::string& what) {
@@ -48,6 +50,12 @@ public:
         return source_.count(token, line(), what);
     }
 
+    /// A count no larger than the file's size in bytes (each item takes at least one): a
+    /// larger one is refused before any arithmetic or loop uses it.
+    std::uint64_t bounded_count(std::string_view token, std::string_view what) const {
+        return source_.count_at_most(token, line(), what, size_, "the file's size in bytes");
+    }
+
     double number(std::string_view token, std::string_view what) const {
         return source_.number(token, line(), what);
     }
@@ -57,6 +65,7 @@ public:
 private:
     TextSource source_;
     LineReader lines_;
+    std::size_t size_;
     bool pending_ = false;
 };
 
@@ -65,10 +74,10 @@ void read_points_part(PolyParser& in, Plc& plc, const std::filesystem::path& fil
     if (header.empty() || header.size() > 4) {
         in.fail("the point header needs 1 to 4 fields");
     }
-    const std::uint64_t count = in.count(header[0], "number of points");
+    const std::uint64_t count = in.bounded_count(header[0], "number of points");
     const std::uint64_t dim = header.size() > 1 ? in.count(header[1], "dimension") : 3;
     const std::uint64_t attributes =
-        header.size() > 2 ? in.count(header[2], "number of attributes") : 0;
+        header.size() > 2 ? in.bounded_count(header[2], "number of attributes") : 0;
     const std::uint64_t markers = header.size() > 3 ? in.count(header[3], "number of markers") : 0;
     if (dim != 3) {
         in.fail("dimension is " + std::to_string(dim) + ", expected 3");
@@ -175,7 +184,7 @@ void read_facets_part(PolyParser& in, Plc& plc) {
     if (header.empty() || header.size() > 2) {
         in.fail("the facet header is `<#facets> [<markers 0|1>]`");
     }
-    const std::uint64_t count = in.count(header[0], "number of facets");
+    const std::uint64_t count = in.bounded_count(header[0], "number of facets");
     const bool markers = header.size() > 1 && in.count(header[1], "markers") != 0;
     for (std::uint64_t f = 0; f < count; ++f) {
         const auto fh = in.next("facet " + std::to_string(f));
@@ -185,14 +194,19 @@ void read_facets_part(PolyParser& in, Plc& plc) {
         PlcFacet facet;
         facet.line = in.line();
         facet.number = f + static_cast<std::uint64_t>(plc.points.index_base);
-        const std::uint64_t polygons = in.count(fh[0], "number of polygons");
-        const std::uint64_t holes = fh.size() > 1 ? in.count(fh[1], "number of holes") : 0;
+        const std::uint64_t polygons = in.bounded_count(fh[0], "number of polygons");
+        const std::uint64_t holes = fh.size() > 1 ? in.bounded_count(fh[1], "number of holes") : 0;
         if (markers && fh.size() > 2) {
-            facet.marker = static_cast<int>(in.count(fh[2], "facet marker"));
+            const std::int64_t marker = in.source().integer(fh[2], in.line(), "facet marker");
+            if (marker < std::numeric_limits<int>::min() ||
+                marker > std::numeric_limits<int>::max()) {
+                in.fail("facet marker " + std::to_string(marker) + " is outside the range of int");
+            }
+            facet.marker = static_cast<int>(marker);
         }
         for (std::uint64_t p = 0; p < polygons; ++p) {
             const auto tokens = in.next("polygon " + std::to_string(p) + " of a facet");
-            const std::uint64_t corners = in.count(tokens[0], "number of corners");
+            const std::uint64_t corners = in.bounded_count(tokens[0], "number of corners");
             if (tokens.size() != corners + 1) {
                 in.fail("the polygon declares " + std::to_string(corners) + " corners but lists " +
                         std::to_string(tokens.size() - 1));
@@ -264,7 +278,7 @@ Plc read_poly(const std::filesystem::path& file) {
     read_facets_part(in, plc);
     if (in.more()) {
         const auto header = in.next_or_pending("the hole header");
-        const std::uint64_t holes = in.count(header[0], "number of holes");
+        const std::uint64_t holes = in.bounded_count(header[0], "number of holes");
         for (std::uint64_t h = 0; h < holes; ++h) {
             plc.volume_holes.push_back(hole_point(in, in.next("a volume hole")));
         }

@@ -30,6 +30,10 @@ std::string_view trim(std::string_view s) {
 }  // namespace
 
 std::string read_file_bytes(const std::filesystem::path& file) {
+    std::error_code error;
+    if (std::filesystem::is_directory(file, error)) {
+        throw Error(located_message(file.string(), std::nullopt, "is a directory, not a file"));
+    }
     std::ifstream in(file, std::ios::binary);
     if (!in) {
         throw Error(located_message(
@@ -114,6 +118,20 @@ std::uint64_t TextSource::count(std::string_view token,
     if (error != std::errc() || end != token.data() + token.size()) {
         fail(line,
              std::string(what) + ": not a non-negative integer: '" + std::string(token) + "'");
+    }
+    return value;
+}
+
+std::uint64_t TextSource::count_at_most(std::string_view token,
+                                        std::size_t line,
+                                        std::string_view what,
+                                        std::uint64_t limit,
+                                        std::string_view why) const {
+    const std::uint64_t value = count(token, line, what);
+    if (value > limit) {
+        fail(line,
+             std::string(what) + " " + std::to_string(value) + " is more than " + std::string(why) +
+                 " (" + std::to_string(limit) + ")");
     }
     return value;
 }

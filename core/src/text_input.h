@@ -56,6 +56,13 @@ public:
     double number(std::string_view token, std::size_t line, std::string_view what) const;
     /// A non-negative decimal integer.
     std::uint64_t count(std::string_view token, std::size_t line, std::string_view what) const;
+    /// A count from a header, refused when above `limit` (what the file can possibly hold, or
+    /// what 32-bit indices can number) before any arithmetic or allocation uses it.
+    std::uint64_t count_at_most(std::string_view token,
+                                std::size_t line,
+                                std::string_view what,
+                                std::uint64_t limit,
+                                std::string_view why) const;
     /// A decimal integer of either sign that fits 64 bits (a boundary marker).
     std::int64_t integer(std::string_view token, std::size_t line, std::string_view what) const;
 

@@ -158,16 +158,46 @@ TEST(PointIo, TextErrorsNameFileAndLine) {
     TempDir dir;
     expect_error(dir, "a.xyz", "", std::nullopt, "empty");
     expect_error(dir, "b.xyz", "# only a comment\n\n", std::nullopt, "empty");
-    expect_error(dir, "c.xyz", "1 2 3\n4 5 6\n\n7 8\n", 4, "expected 3 numbers, found 2");
-    expect_error(dir, "d.xyz", "1 2 3 4\n", 1, "expected 3 numbers, found 4");
+    expect_error(dir,
+                 "c.xyz",
+                 "1 2 3\n4 5 6\n\n7 8\n",
+                 4,
+                 "expected 3 fields, as on the first data line, found 2");
+    expect_error(dir, "d.xyz", "1 2\n", 1, "expected at least 3 numbers (x y z), found 2");
+    expect_error(dir, "d2.csv", "x,y,z\n1,2,3\nx,y,z\n", 3, "x: not a number");
+    expect_error(dir,
+                 "d3.xyz",
+                 "x y z nx ny nz\n1 2 3 0 0 1\n4 5 6 0 1\n",
+                 3,
+                 "expected 6 fields, as on the first data line, found 5");
     expect_error(dir, "e.xyz", "1 2 3\n1 nan 3\n", 2, "NaN");
     expect_error(dir, "f.xyz", "1 2 inf\n", 1, "infinity");
     expect_error(dir, "g.xyz", "1 2 1e999\n", 1, "out of the range");
     expect_error(dir, "h.xyz", "1 2 1e-400\n", 1, "underflows");
     expect_error(dir, "i.csv", "1,2,3\n1,,3\n", 2, "empty number");
     expect_error(dir, "j.txt", "1 2 abc\n", 1, "not a number");
-    expect_error(dir, "k.xyz", "1 2 3\n", 1, "expected 4 numbers", true);
+    expect_error(dir, "k.xyz", "1 2 3\n", 1, "expected at least 4 numbers (x y z weight)", true);
     expect_error(dir, "l.dat", "1 2 3\n", std::nullopt, "unknown point format");
+}
+
+// What point clouds come as: a CSV header row, extra columns (normals, colours) after x y z,
+// columns named in another order.
+TEST(PointIo, HeaderRowsAndExtraColumns) {
+    TempDir dir;
+    const PointSet csv = read_points(dir.write("a.csv", "x,y,z\n1,2,3\n4,5,6\n"), false);
+    ASSERT_EQ(csv.size(), 2u);
+    EXPECT_EQ(csv.points[1].z, 6.0);
+    const PointSet normals =
+        read_points(dir.write("b.xyz", "1 2 3 0 0 1 255 0 0\n4 5 6 0 1 0 0 255 0\n"), false);
+    ASSERT_EQ(normals.size(), 2u);
+    EXPECT_EQ(normals.points[1].x, 4.0);
+    EXPECT_EQ(normals.points[1].z, 6.0);
+    const PointSet named = read_points(dir.write("c.csv", "id,Z,weight,X,Y\n7,3,0.5,1,2\n"), true);
+    ASSERT_EQ(named.size(), 1u);
+    EXPECT_EQ(named.points[0].x, 1.0);
+    EXPECT_EQ(named.points[0].y, 2.0);
+    EXPECT_EQ(named.points[0].z, 3.0);
+    EXPECT_EQ(named.weights[0], 0.5);
 }
 
 TEST(PointIo, MissingFileIsNamed) {
