@@ -17,8 +17,14 @@ target_compile_options(cavity_strict_fp INTERFACE -ffp-contract=off -fno-fast-ma
                                                   -fno-unsafe-math-optimizations)
 
 if(CAVITY_SANITIZE)
-  add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
-  add_link_options(-fsanitize=address,undefined)
+  # float-cast-overflow is not part of -fsanitize=undefined: it catches a double converted to an
+  # integer type that cannot hold it (file data such as a PLY list length). _GLIBCXX_ASSERTIONS
+  # bounds-checks operator[] of the standard containers, which ASan misses inside a vector's
+  # capacity.
+  add_compile_options(-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all
+                      -fno-omit-frame-pointer)
+  add_compile_definitions(_GLIBCXX_ASSERTIONS)
+  add_link_options(-fsanitize=address,undefined,float-cast-overflow)
 endif()
 if(CAVITY_EXPENSIVE_CHECKS)
   add_compile_definitions(CAVITY_EXPENSIVE_CHECKS=1)
