@@ -12,7 +12,10 @@
 #include "cavity/core/points_fingerprint.h"
 #include "cavity/core/validate.h"
 #include "commands.h"
+#include "integer_option.h"
+#include "out_of_memory.h"
 #include "point_ids.h"
+#include "progress_bar.h"
 
 namespace cavity::cli {
 
@@ -71,12 +74,21 @@ void run_check(const CheckArgs& args) {
         run_cdt_check(args);
         return;
     }
-    const core::PointSet points = core::read_points(args.points, args.weighted);
+    const core::PointSet points = naming_memory("reading " + args.points, [&] {
+        ProgressStage stage("reading " + args.points, !args.quiet);
+        return core::read_points(args.points, args.weighted);
+    });
     core::check_points_fingerprint(args.mesh, args.points, points);
-    const auto tets = core::engine_orientation_from_file(
-        args.mesh, points, core::read_ele(args.mesh, points.index_base));
-    const core::ValidationReport report =
-        core::validate(points, tets, zero_based_ids(points, args.deleted, "--deleted"));
+    const auto tets = naming_memory("reading " + args.mesh, [&] {
+        ProgressStage stage("reading " + args.mesh, !args.quiet);
+        return core::engine_orientation_from_file(
+            args.mesh, points, core::read_ele(args.mesh, points.index_base));
+    });
+    const core::ValidationReport report = naming_memory(
+        "checking " + args.mesh + " (" + std::to_string(tets.size()) + " tetrahedra)", [&] {
+            ProgressStage stage("checking " + args.mesh, !args.quiet);
+            return core::validate(points, tets, zero_based_ids(points, args.deleted, "--deleted"));
+        });
     if (!args.quiet) {
         std::printf(
             "%zu points: %zu vertices, %zu edges, %zu triangles (%zu on the hull), %zu tetrahedra; "
@@ -118,7 +130,8 @@ void add_check_command(CLI::App& app) {
                     args->deleted,
                     "points removed by `cavity triangulate --delete` (the same comma-separated "
                     "list): the mesh must be the triangulation of the other points")
-        ->delimiter(',');
+        ->delimiter(',')
+        ->transform(integer_in("a --deleted point", 0, 0xFFFF'FFFFu));
     cmd->add_flag("--quiet", args->quiet, "print only problems");
     cmd->callback([args] { run_check(*args); });
 }

@@ -6,6 +6,7 @@
 #include "cavity/core/error.h"
 #include "cavity/experiments/harness.h"
 #include "commands.h"
+#include "integer_option.h"
 #include "progress_bar.h"
 
 namespace cavity::cli {
@@ -91,6 +92,7 @@ void add_experiment_command(CLI::App& app) {
     cmd->add_flag("--resume", args->resume, "skip runs already in the tables");
     cmd->add_option("--shard", args->shard, "run shard i of N (i/N); parts merge when all exist");
     cmd->add_option("--seed", args->seed, "replace the suite's seeds by this one")
+        ->transform(integer_in("--seed", 0, UINT64_MAX))
         ->each([args](const std::string&) { args->seed_given = true; });
     cmd->add_flag("--merge", args->merge, "only merge finished shard parts");
     cmd->add_flag("--quiet", args->quiet, "no progress bar or summary");

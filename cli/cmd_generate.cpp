@@ -11,6 +11,8 @@
 #include "cavity/core/generate.h"
 #include "cavity/core/point_io.h"
 #include "commands.h"
+#include "integer_option.h"
+#include "out_of_memory.h"
 
 namespace cavity::cli {
 
@@ -26,8 +28,15 @@ struct GenerateOptions {
 
 void run_generate(const GenerateOptions& options) {
     const core::WeightSpec weights = core::parse_weight_spec(options.weights);
+    const double bytes = static_cast<double>(options.count) *
+                         (weights.kind == core::WeightSpec::Kind::kNone ? 24 : 32);
     const core::PointSet points =
-        core::generate_points(options.distribution, options.count, options.seed, weights);
+        naming_memory("generating " + std::to_string(options.count) + " " + options.distribution +
+                          " points (" + about_bytes(bytes) + ")",
+                      [&] {
+                          return core::generate_points(
+                              options.distribution, options.count, options.seed, weights);
+                      });
     core::write_points(options.output, points);
     std::printf("wrote %zu points to %s\n", points.size(), options.output.c_str());
 }
@@ -47,10 +56,11 @@ void add_generate_command(CLI::App& app) {
     generate->add_option("distribution", options->distribution, "Distribution (listed below)")
         ->required()
         ->check(CLI::IsMember(names));
-    generate->add_option("n", options->count, "Number of points")
+    generate->add_option("n", options->count, "Number of points (2000000, 2_000_000 or 2e6)")
         ->required()
-        ->check(CLI::PositiveNumber);
-    generate->add_option("--seed", options->seed, "Seed of the random distributions (default 0)");
+        ->transform(integer_in("n", 4, 0xFFFF'FFFFu));
+    generate->add_option("--seed", options->seed, "Seed of the random distributions (default 0)")
+        ->transform(integer_in("--seed", 0, UINT64_MAX));
     generate->add_option("--weights",
                          options->weights,
                          "none (default), zero, equal:W or uniform:A:B (random in [A,B))");

@@ -1,3 +1,5 @@
+#include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -6,6 +8,7 @@
 #include "cavity/core/point_io.h"
 #include "cavity/experiments/jtets.h"
 #include "commands.h"
+#include "progress_bar.h"
 
 namespace cavity::cli {
 
@@ -15,13 +18,53 @@ struct JTetsArgs {
     std::string input;
     std::string output;
     bool brute_force = false;
+    bool quiet = false;
+};
+
+/// Warns once, on stderr, when the run so far predicts more than a minute: the sweep costs about
+/// n^4 operations, so a user who meant a few hundred points learns it before waiting an hour.
+class CostWarning {
+public:
+    CostWarning(std::size_t n, bool enabled) : n_(n), enabled_(enabled) {}
+
+    void update(std::uint64_t done, std::uint64_t total) {
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        if (!enabled_ || warned_ || done == 0 || elapsed < 1.0) {
+            return;
+        }
+        warned_ = true;
+        const double estimate = elapsed * static_cast<double>(total) / static_cast<double>(done);
+        if (estimate > 60) {
+            std::fprintf(stderr,
+                         "cavity jtets: %zu points will take about %.0f minutes (the cost grows "
+                         "like n^4: %zu points would take about %.1f)\n",
+                         n_,
+                         estimate / 60,
+                         n_ / 2,
+                         estimate / 60 / 16);
+        }
+    }
+
+private:
+    std::size_t n_;
+    bool enabled_;
+    bool warned_ = false;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 void run_jtets(const JTetsArgs& args) {
     const core::PointSet points = core::read_points(args.input, false);
-    const experiments::JTetCounts counts = args.brute_force
-                                               ? experiments::count_jtets_brute_force(points.points)
-                                               : experiments::count_jtets(points.points);
+    ProgressBar bar("counting j-tetrahedra", !args.quiet);
+    CostWarning warning(points.size(), !args.quiet);
+    const experiments::JTetCounts counts =
+        args.brute_force
+            ? experiments::count_jtets_brute_force(points.points)
+            : experiments::count_jtets(points.points, [&](std::uint64_t done, std::uint64_t total) {
+                  warning.update(done, total);
+                  bar.update(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
+              });
+    bar.finish();
     const std::vector<std::uint64_t> cumulative = counts.cumulative();
     std::string csv = "j,f_j,F_j\n";
     for (std::size_t j = 0; j < counts.f.size(); ++j) {
@@ -50,6 +93,7 @@ void add_jtets_command(CLI::App& app) {
         "a few hundred points)");
     cmd->add_option("points", args->input, "input points")->required();
     cmd->add_option("-o,--output", args->output, "write the CSV here instead of stdout");
+    cmd->add_flag("--quiet", args->quiet, "no progress bar and no cost warning");
     cmd->add_flag("--brute-force", args->brute_force,
                   "count over all 4-subsets instead (O(n^5), for cross-checks)");
     cmd->callback([args] { run_jtets(*args); });

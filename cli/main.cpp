@@ -1,10 +1,12 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "cavity/core/error.h"
+#include "cavity/core/version.h"
 #include "cavity/predicates/fp_environment.h"
 #include "commands.h"
 #include "exit_codes.h"
@@ -27,10 +29,23 @@ int main(int argc, char** argv) {
     cavity::cli::add_cdt_command(app);
     cavity::cli::add_jtets_command(app);
     cavity::cli::add_experiment_command(app);
+    const std::string version = std::string("cavity ") + cavity::core::kVersion;
+    app.set_version_flag("--version", version);
+    for (CLI::App* command : app.get_subcommands({})) {
+        command->set_version_flag("--version", version);
+        command->footer(cavity::cli::kExitStatusHelp);
+    }
+    app.footer(cavity::cli::kExitStatusHelp);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        if (e.get_exit_code() == 0) {
+            return app.exit(e);  // --help, --version: printed to stdout, success
+        }
+        std::fprintf(stderr,
+                     "cavity: %s\nRun with --help for the usage.\n",
+                     cavity::cli::usage_message(e.what()).c_str());
+        return cavity::cli::kExitUsage;
     } catch (const cavity::core::Error& e) {
         std::fprintf(stderr, "cavity: %s\n", e.what());
         return cavity::cli::exit_code(e.kind());

@@ -17,6 +17,10 @@ foreach(_layer predicates perturbation core)
                "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/${_layer}/include>"
                "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
 endforeach()
+set_property(TARGET cavity_core APPEND PROPERTY INTERFACE_INCLUDE_DIRECTORIES
+             "$<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/generated>")
+set_property(TARGET cavity_core APPEND PROPERTY INCLUDE_DIRECTORIES
+             "${PROJECT_BINARY_DIR}/generated")
 set_property(TARGET cavity_oracle PROPERTY INTERFACE_INCLUDE_DIRECTORIES
              "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/predicates/include>"
              "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
@@ -50,6 +54,8 @@ install(TARGETS cavity RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
 install(DIRECTORY predicates/include/ perturbation/include/ core/include/
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
         FILES_MATCHING PATTERN "*.h")
+install(FILES "${PROJECT_BINARY_DIR}/generated/cavity/core/version.h"
+        DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/cavity/core")
 install(EXPORT cavityTargets NAMESPACE cavity:: DESTINATION "${CAVITY_INSTALL_CMAKEDIR}")
 
 configure_package_config_file(cmake/cavityConfig.cmake.in

@@ -188,14 +188,22 @@ std::vector<std::uint64_t> JTetCounts::cumulative() const {
     return total;
 }
 
-JTetCounts count_jtets(std::span<const Point3> points) {
+JTetCounts count_jtets(std::span<const Point3> points, const JTetProgress& progress) {
     check_size(points.size());
     JTetCounts counts = sized_counts(points.size());
     const auto n = static_cast<std::uint32_t>(points.size());
     std::vector<PencilPoint> sweep;
     std::vector<std::uint32_t> coplanar;
+    // Progress in triangles swept: each costs one sweep of the n points.
+    const auto pairs = [](std::uint64_t m) { return m * (m - 1) / 2; };
+    const std::uint64_t triangles = pairs(n) * (n - 2) / 3;
+    std::uint64_t swept = 0;
     for (std::uint32_t a = 0; a + 3 < n; ++a) {
         for (std::uint32_t b = a + 1; b + 2 < n; ++b) {
+            if (progress) {
+                progress(swept, triangles);
+            }
+            swept += n - b - 2;
             for (std::uint32_t c = b + 1; c + 1 < n; ++c) {
                 sweep_triangle(points, a, b, c, sweep, coplanar, counts.f);
             }

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -33,7 +34,9 @@ struct JTetCounts {
 /// tetrahedron is counted once, from the triangle of its three lowest indices.
 /// Cost O(n^4) exact predicate calls in the worst case, O(n^4) double operations typically:
 /// n = 200 takes seconds.
-JTetCounts count_jtets(std::span<const Point3> points);
+/// `progress`, when set, is called now and then with (triangles swept, all triangles): the ETA.
+using JTetProgress = std::function<void(std::uint64_t done, std::uint64_t total)>;
+JTetCounts count_jtets(std::span<const Point3> points, const JTetProgress& progress = {});
 
 /// Exact f_j by brute force over all 4-subsets, O(n^5): the reference for tests.
 JTetCounts count_jtets_brute_force(std::span<const Point3> points);
