@@ -51,8 +51,8 @@ void run_cdt_check(const CheckArgs& args) {
         }
     }
     core::check_points_fingerprint(args.mesh, args.points, points);
-    const auto tets = core::engine_orientation_from_file(
-        args.mesh, plc.points, core::read_ele(args.mesh, plc.points.index_base));
+    const auto tets = core::read_ele(args.mesh, plc.points.index_base);
+    core::refuse_inverted_mesh(args.mesh, plc.points, tets);
     const core::CdtValidation report = core::validate_cdt(plc, tets);
     if (!report.ok()) {
         std::string message = args.mesh + ": not the constrained Delaunay tetrahedralization of " +
@@ -81,9 +81,9 @@ void run_check(const CheckArgs& args) {
     core::check_points_fingerprint(args.mesh, args.points, points);
     const auto tets = naming_memory("reading " + args.mesh, [&] {
         ProgressStage stage("reading " + args.mesh, !args.quiet);
-        return core::engine_orientation_from_file(
-            args.mesh, points, core::read_ele(args.mesh, points.index_base));
+        return core::read_ele(args.mesh, points.index_base);
     });
+    core::refuse_inverted_mesh(args.mesh, points, tets);
     const core::ValidationReport report = naming_memory(
         "checking " + args.mesh + " (" + std::to_string(tets.size()) + " tetrahedra)", [&] {
             ProgressStage stage("checking " + args.mesh, !args.quiet);

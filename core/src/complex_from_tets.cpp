@@ -55,7 +55,7 @@ std::vector<HalfFacet> glue_pairs(ArrayStorage& storage, TetId begin, TetId end)
 ArrayStorage complex_from_tets(std::span<const std::array<std::uint32_t, 4>> tets) {
     ArrayStorage storage;
     for (const auto& t : tets) {
-        storage.add_tetrahedron({t[0], t[1], t[2], t[3]});
+        storage.add_tetrahedron({t[1], t[0], t[2], t[3]});  // positive volume → orient3d > 0
     }
     const auto solid_end = static_cast<TetId>(storage.capacity());
     const std::vector<HalfFacet> boundary = glue_pairs(storage, 0, solid_end);
@@ -97,7 +97,7 @@ std::vector<std::array<std::uint32_t, 4>> solid_tets(const ArrayStorage& storage
     for (TetId t = 0; t < storage.capacity(); ++t) {
         if (storage.alive(t) && !is_ghost(storage.vertices(t))) {
             const TetVertices& v = storage.vertices(t);
-            out.push_back({v[0], v[1], v[2], v[3]});
+            out.push_back({v[1], v[0], v[2], v[3]});  // orient3d > 0 → positive volume
         }
     }
     return out;
@@ -116,7 +116,9 @@ std::vector<std::string> check_complex(const ArrayStorage& storage, const Geomet
             }
         }
         if (!is_ghost(v) && geometry.orient3d(v[0], v[1], v[2], v[3], nullptr) != Sign::kPos) {
-            problems.push_back("tetrahedron " + tet_name(v) + " is not positively oriented");
+            // Named as the API lists it (positive right-hand volume), the stored order mirrored.
+            problems.push_back("tetrahedron " + tet_name({v[1], v[0], v[2], v[3]}) +
+                               ": volume not positive (right-hand rule)");
         }
         for (int f = 0; f < 4; ++f) {
             const HalfFacet h = storage.adjacent(t, f);

@@ -128,9 +128,10 @@ GiftWrapResult gift_wrap_delaunay(const PointSet& points) {
         engine.offer(facet_vertices(seed, f), seed[static_cast<std::size_t>(f)]);
     }
     engine.run();
-    out.tets.push_back({seed[0], seed[1], seed[2], seed[3]});
+    // The engine's orientation mirrored: the API hands out positive right-hand volume.
+    out.tets.push_back({seed[1], seed[0], seed[2], seed[3]});
     for (const TetVertices& t : engine.tets()) {
-        out.tets.push_back({t[0], t[1], t[2], t[3]});
+        out.tets.push_back({t[1], t[0], t[2], t[3]});
     }
     ++out.counters.tets_created;
     out.hull_triangles = engine.hull_triangles();

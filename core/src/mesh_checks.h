@@ -14,12 +14,8 @@ namespace cavity::core {
 /// PREFIX + suffix (".node", ".ele"...): the suffix is appended, never substituted.
 std::filesystem::path with_suffix(const std::filesystem::path& prefix, const char* suffix);
 
-/// The body of a TetGen .ele file; `engine_orientation`: `tets` have orient3d > 0 and are
-/// mirrored to positive volume, else they have positive volume already.
-void write_ele(AtomicFileGroup::Writer& out,
-               const PointSet& points,
-               std::span<const Tet> tets,
-               bool engine_orientation);
+/// The body of a TetGen .ele file, `tets` as they are (positive volume).
+void write_ele(AtomicFileGroup::Writer& out, const PointSet& points, std::span<const Tet> tets);
 
 void check_tets(const std::filesystem::path& file,
                 const PointSet& points,

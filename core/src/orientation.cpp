@@ -29,9 +29,9 @@ OrientationCount count_orientations(const PointSet& points, std::span<const Tet>
     return count;
 }
 
-std::vector<Tet> engine_orientation_from_file(const std::string& file,
-                                              const PointSet& points,
-                                              std::vector<Tet> tets) {
+void refuse_inverted_mesh(const std::string& file,
+                          const PointSet& points,
+                          std::span<const Tet> tets) {
     const OrientationCount count = count_orientations(points, tets);
     if (count.negative > 0 && count.positive == 0) {
         throw Error(located_message(
@@ -42,10 +42,6 @@ std::vector<Tet> engine_orientation_from_file(const std::string& file,
                 "the orientation cavity wrote before version 0.2); TetGen, VTK and cavity now "
                 "write positive volume: swap two vertices of each tetrahedron"));
     }
-    for (Tet& t : tets) {
-        t = swap_handedness(t);
-    }
-    return tets;
 }
 
 }  // namespace cavity::core

@@ -149,20 +149,14 @@ Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32
             if (out.neighbors[4 * t + f] >= 0) {
                 continue;
             }
-            // kFacetVertices lists the facet with the opposite vertex on its positive side: seen
-            // from outside, the hull triangle is counter-clockwise.
+            // kFacetVertices lists facet f with the opposite vertex on its orient3d-positive side,
+            // which for a tetrahedron of positive right-hand volume is clockwise seen from
+            // outside: reversed, the hull triangle is counter-clockwise.
             const auto& s = kFacetVertices[f];
             out.hull.push_back({static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[0])]),
-                                static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[1])]),
-                                static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[2])])});
+                                static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[2])]),
+                                static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[1])])});
         }
-    }
-
-    // Hand the tetrahedra out with positive volume by the right-hand rule (scipy's users, VTK and
-    // PyVista expect it): swapping vertices 0 and 1 swaps the neighbours opposite them too.
-    for (std::size_t t = 0; t < m; ++t) {
-        out.simplices[t] = swap_handedness(out.simplices[t]);
-        std::swap(out.neighbors[4 * t], out.neighbors[4 * t + 1]);
     }
     return out;
 }

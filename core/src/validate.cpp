@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cavity/core/duplicates.h"
+#include "cavity/core/handedness.h"
 #include "cavity/core/tetrahedron.h"
 #include "cavity/perturbation/outer_halfspace.h"
 #include "cavity/perturbation/sos.h"
@@ -43,9 +44,13 @@ public:
     Validator(const PointSet& points,
               std::span<const std::array<std::uint32_t, 4>> tets,
               std::span<const std::uint32_t> absent)
-        : points_(points)
-        , tets_(tets)
-        , absent_(points.size(), 0) {
+        : points_(points), absent_(points.size(), 0) {
+        // The checks below reason in the engine's orientation (orient3d > 0); the API's lists have
+        // positive right-hand volume, the mirror image.
+        tets_.reserve(tets.size());
+        for (const auto& t : tets) {
+            tets_.push_back(swap_handedness(t));
+        }
         for (std::uint32_t a : absent) {
             if (a < absent_.size()) {
                 absent_[a] = 1;
@@ -88,7 +93,7 @@ private:
     }
 
     std::string tet_name(std::size_t t) const {
-        const auto& v = tets_[t];
+        const Tet v = swap_handedness(tets_[t]);  // as the caller listed it
         return "tetrahedron " + std::to_string(t) + " (" + std::to_string(v[0]) + " " +
                std::to_string(v[1]) + " " + std::to_string(v[2]) + " " + std::to_string(v[3]) + ")";
     }
@@ -120,7 +125,7 @@ private:
                 used_[w] = 1;
             }
             if (predicates::orient3d(p(v[0]), p(v[1]), p(v[2]), p(v[3])) != Sign::kPos) {
-                problem(tet_name(t) + ": not positively oriented (orient3d <= 0)");
+                problem(tet_name(t) + ": volume not positive (right-hand rule)");
             }
         }
         report_.vertices = static_cast<std::size_t>(std::count(used_.begin(), used_.end(), 1));
@@ -336,7 +341,7 @@ private:
     }
 
     const PointSet& points_;
-    std::span<const std::array<std::uint32_t, 4>> tets_;
+    std::vector<Tet> tets_;
     std::vector<unsigned char> absent_;
     std::vector<unsigned char> used_;
     std::vector<FaceRecord> faces_;

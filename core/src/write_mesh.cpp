@@ -14,10 +14,7 @@ std::filesystem::path with_suffix(const std::filesystem::path& prefix, const cha
     return std::filesystem::path(prefix.string() + suffix);
 }
 
-void write_ele(AtomicFileGroup::Writer& out,
-               const PointSet& points,
-               std::span<const Tet> tets,
-               bool engine_orientation) {
+void write_ele(AtomicFileGroup::Writer& out, const PointSet& points, std::span<const Tet> tets) {
     const auto base = static_cast<std::uint64_t>(points.index_base);
     // TetGen and every .ele reader skip '#' comments; `cavity check` reads this one, at the end of
     // the header line so that line-oriented tools still find the tetrahedra from line 2, to tell
@@ -27,7 +24,7 @@ void write_ele(AtomicFileGroup::Writer& out,
     text += " 4 0  " + points_fingerprint_comment(points_fingerprint(points)) + '\n';
     for (std::size_t t = 0; t < tets.size(); ++t) {
         append_uint(text, t + base);
-        for (const std::uint32_t v : engine_orientation ? swap_handedness(tets[t]) : tets[t]) {
+        for (const std::uint32_t v : tets[t]) {
             text += ' ';
             append_uint(text, v + base);
         }
@@ -45,7 +42,7 @@ void write_tetgen(AtomicFileGroup& group,
     const auto ele = with_suffix(prefix, ".ele");
     check_tets(ele, points, tets);
     write_node(group.add(node), points);
-    write_ele(group.add(ele), points, tets, true);
+    write_ele(group.add(ele), points, tets);
 }
 
 void write_tetgen(const std::filesystem::path& prefix,

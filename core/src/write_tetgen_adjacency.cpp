@@ -68,7 +68,7 @@ void write_tetgen(AtomicFileGroup& group,
     const auto ele = with_suffix(prefix, ".ele");
     check_tets(ele, points, adjacency.simplices);
     write_node(group.add(with_suffix(prefix, ".node")), points);
-    write_ele(group.add(ele), points, adjacency.simplices, false);
+    write_ele(group.add(ele), points, adjacency.simplices);
     if (extras.neighbors) {
         write_neigh(group.add(with_suffix(prefix, ".neigh")), adjacency, points.index_base);
     }

@@ -95,11 +95,10 @@ void write_vtu_body(AtomicFileGroup::Writer& out,
         }
     });
     out.write("</Points>\n<Cells>\n");
-    // VTK's cells have positive volume by the right-hand rule: the engine's order mirrored. VTK
-    // reads connectivity as a flat array (one component); the text shows a cell a line.
+    // VTK reads connectivity as a flat array (one component); the text shows a cell a line.
     data_array<std::int64_t>(out, enc, "Int64", "connectivity", 1, 4, [&](auto sink) {
-        for (const Tet& engine_tet : tets) {
-            for (const std::uint32_t v : swap_handedness(engine_tet)) {
+        for (const Tet& tet : tets) {
+            for (const std::uint32_t v : tet) {
                 sink(static_cast<std::int64_t>(v));
             }
         }

@@ -7,10 +7,10 @@
 
 #include "cavity/core/error.h"
 #include "cavity/core/insertion_order.h"
+#include "cavity/core/orientation.h"
 #include "cavity/core/point_set.h"
 #include "cavity/core/triangulate.h"
 #include "cavity/core/validate.h"
-#include "cavity/predicates/orient3d.h"
 
 int main() {
     namespace core = cavity::core;
@@ -31,23 +31,21 @@ int main() {
         options.count = true;
         const core::Triangulation mesh = core::triangulate(grid, order.sequence, options);
 
-        // Every tetrahedron is positively oriented: never a flat one, even on a grid.
-        std::size_t flat = 0;
-        for (const auto& t : mesh.tets) {
-            const auto& p = grid.points;
-            if (cavity::predicates::orient3d(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) !=
-                cavity::predicates::Sign::kPos) {
-                ++flat;
-            }
-        }
+        // Every tetrahedron has positive volume by the right-hand rule, as TetGen and VTK list
+        // them: never a flat or inverted one, even on a grid.
+        const core::OrientationCount signs = core::count_orientations(grid, mesh.tets);
+        const std::size_t not_positive = signs.negative + signs.flat;
         const core::ValidationReport report = core::validate(grid, mesh.tets);
         std::printf("%zu points, %zu tetrahedra, %zu hull triangles, %zu not positive, %s\n",
-                    grid.size(), mesh.tets.size(), mesh.hull_triangles, flat,
+                    grid.size(),
+                    mesh.tets.size(),
+                    mesh.hull_triangles,
+                    not_positive,
                     report.ok() ? "valid" : "INVALID");
         std::printf("work: %llu tetrahedra created, %llu insphere calls decided by the filter\n",
                     static_cast<unsigned long long>(mesh.counters.tets_created),
                     static_cast<unsigned long long>(mesh.counters.stage_calls[1][0]));
-        return report.ok() && flat == 0 ? 0 : 1;
+        return report.ok() && not_positive == 0 ? 0 : 1;
     } catch (const core::Error& e) {
         std::fprintf(stderr, "tetrahedralize: %s\n", e.what());
         return 1;

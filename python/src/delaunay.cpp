@@ -136,12 +136,7 @@ public:
         core::ValidationReport report;
         {
             py::gil_scoped_release nogil;
-            // The validator takes the engine's orientation, the mirror image of `simplices`.
-            std::vector<core::Tet> tets(simplices.begin(), simplices.end());
-            for (core::Tet& t : tets) {
-                t = core::swap_handedness(t);
-            }
-            report = core::validate(input_, tets);
+            report = core::validate(input_, simplices);
         }
         if (report.ok()) {
             return true;
@@ -245,36 +240,57 @@ Raises ValueError (naming the row) for a wrong shape, NaN or infinity, fewer tha
 or all points coplanar or collinear (naming the affine dimension). The GIL is released while
 triangulating.
 )doc")
-        .def(py::init<const py::handle&, const py::handle&, const std::string&, const std::string&,
-                      std::uint64_t, const std::string&, const py::object&>(),
-             py::arg("points"), py::arg("weights") = py::none(), py::arg("order") = "brio",
-             py::arg("locate") = "walk", py::arg("seed") = 0, py::arg("storage") = "array",
+        .def(py::init<const py::handle&,
+                      const py::handle&,
+                      const std::string&,
+                      const std::string&,
+                      std::uint64_t,
+                      const std::string&,
+                      const py::object&>(),
+             py::arg("points"),
+             py::arg("weights") = py::none(),
+             py::arg("order") = "brio",
+             py::arg("locate") = "walk",
+             py::arg("seed") = 0,
+             py::arg("storage") = "array",
              py::arg("progress") = py::none())
         .def_readonly("points", &Delaunay::points_, "(n, 3) float64: the input points")
         .def_readonly("weights", &Delaunay::weights_, "(n,) float64 weights, or None")
-        .def_readonly("simplices", &Delaunay::simplices_,
-                      "(m, 4) int32: tetrahedra as row indices, positively oriented "
-                      "(orient3d > 0)")
-        .def_readonly("neighbors", &Delaunay::neighbors_,
+        .def_readonly("simplices",
+                      &Delaunay::simplices_,
+                      "(m, 4) int32: tetrahedra as row indices, each with positive volume by "
+                      "the right-hand rule (TetGen's and VTK's convention; cavity.orient3d "
+                      "of each row is -1)")
+        .def_readonly("neighbors",
+                      &Delaunay::neighbors_,
                       "(m, 4) int32: neighbors[t, i] is the tetrahedron opposite vertex i of t, "
                       "-1 on the convex hull")
-        .def_readonly("convex_hull", &Delaunay::convex_hull_,
+        .def_readonly("convex_hull",
+                      &Delaunay::convex_hull_,
                       "(h, 3) int32: hull triangles, counter-clockwise seen from outside")
-        .def_readonly("vertex_to_simplex", &Delaunay::vertex_to_simplex_,
+        .def_readonly("vertex_to_simplex",
+                      &Delaunay::vertex_to_simplex_,
                       "(n,) int32: a tetrahedron having the point as a vertex, -1 for points "
                       "that are not vertices (repeats, redundant)")
-        .def_readonly("duplicates", &Delaunay::duplicates_,
-                      "(k, 2) int32: rows [point, first row with the same coordinates (and weight)]")
-        .def_readonly("redundant", &Delaunay::redundant_,
+        .def_readonly(
+            "duplicates",
+            &Delaunay::duplicates_,
+            "(k, 2) int32: rows [point, first row with the same coordinates (and weight)]")
+        .def_readonly("redundant",
+                      &Delaunay::redundant_,
                       "(r,) int32: weighted points that are not vertices, increasing")
-        .def_readonly("stats", &Delaunay::stats_,
-                      "dict: instrumentation counters, stage_calls and timings (wall and CPU seconds)")
+        .def_readonly(
+            "stats",
+            &Delaunay::stats_,
+            "dict: instrumentation counters, stage_calls and timings (wall and CPU seconds)")
         .def_property_readonly("nsimplex", [](const Delaunay& d) { return d.simplices_.shape(0); })
         .def_property_readonly("npoints", [](const Delaunay& d) { return d.points_.shape(0); })
         .def_property_readonly("ndim", [](const Delaunay&) { return 3; })
-        .def("check", &Delaunay::check,
-             "Validates the triangulation exactly (cavity::core::validate): returns True, or raises "
-             "cavity.ValidationError listing the problems.")
+        .def(
+            "check",
+            &Delaunay::check,
+            "Validates the triangulation exactly (cavity::core::validate): returns True, or raises "
+            "cavity.ValidationError listing the problems.")
         .def("__repr__", [](const Delaunay& d) {
             return "<cavity.Delaunay: " + std::to_string(d.points_.shape(0)) + " points, " +
                    std::to_string(d.simplices_.shape(0)) + " tetrahedra>";

@@ -55,15 +55,17 @@ PointSet pinwheel_points() {
     return points;
 }
 
-/// The tetrahedron over base triangle (first, b, c) with `first` in slot 0 and the apex in slot
-/// 3, b and c swapped if needed for positive orientation. The walk tries facets in slot order,
+/// The tetrahedron over base triangle (first, b, c) with `first` in storage slot 0 and the apex in
+/// slot 3, b and c swapped if needed for positive orientation. The walk tries facets in slot order,
 /// so it leaves across the facet opposite `first` whenever the target is beyond that facet.
+/// complex_from_tets takes positive right-hand volume and mirrors it by swapping slots 0 and 1, so
+/// the list gives the mirror image.
 Quad over(const PointSet& points, std::uint32_t first, std::uint32_t b, std::uint32_t c) {
     const auto& p = points.points;
     if (predicates::orient3d(p[first], p[b], p[c], p[kApex]) != predicates::Sign::kPos) {
         std::swap(b, c);
     }
-    return {first, b, c, kApex};
+    return {b, first, c, kApex};
 }
 
 /// The cone from the apex over the base triangulation: the target's fan (three triangles), and

@@ -22,11 +22,11 @@ using Tets = std::vector<std::array<std::uint32_t, 4>>;
 
 using test::canonical;
 
-/// Orders each tetrahedron positively.
+/// Orders each tetrahedron with positive right-hand volume, as complex_from_tets takes them.
 Tets oriented(const PointSet& ps, Tets tets) {
     for (auto& t : tets) {
         const auto& p = ps.points;
-        if (predicates::orient3d(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) == predicates::Sign::kNeg) {
+        if (predicates::orient3d(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) == predicates::Sign::kPos) {
             std::swap(t[0], t[1]);
         }
     }

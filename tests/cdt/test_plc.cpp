@@ -731,7 +731,7 @@ TEST(Messages, ValidatorNamesFileIds) {
     const CdtValidation inverted = validate_cdt(plc, tets);
     const std::string name = "(" + std::to_string(t[1] + 1) + " " + std::to_string(t[0] + 1) + " " +
                              std::to_string(t[2] + 1) + " " + std::to_string(t[3] + 1) + ")";
-    EXPECT_TRUE(mentions(inverted.problems, name + " is not positively oriented"))
+    EXPECT_TRUE(mentions(inverted.problems, name + ": volume not positive (right-hand rule)"))
         << name << "\n"
         << joined(inverted.problems);
     // An edge needing protection, named by the file's ids.

@@ -58,7 +58,7 @@ grep -q '"triangulate_s"' dup.json || fail "dup: stats lack timings"
 "$cavity" check cube.node cube.ele --quiet || fail "cube: check rejects a valid mesh"
 awk 'NR==2 {t=$3; $3=$4; $4=t} {print}' cube.ele > flipped.ele
 "$cavity" check cube.node flipped.ele --quiet 2>err.txt && fail "check accepts a flipped tetrahedron"
-grep -q "not positively oriented" err.txt || fail "flipped: message '$(cat err.txt)'"
+grep -q "volume not positive" err.txt || fail "flipped: message '$(cat err.txt)'"
 awk 'NR==1 {$1=$1-1} NR!=2 {print}' cube.ele | awk 'NR==1 {print; next} {$1=NR-2; print}' > missing.ele
 "$cavity" check cube.node missing.ele --quiet 2>err.txt && fail "check accepts a mesh with a hole"
 

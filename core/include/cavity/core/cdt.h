@@ -48,7 +48,8 @@ struct Cdt {
     Plc plc;  ///< the input PLC, then the protecting points appended after the input's points
               ///< (their indices start at the input's point count), then the inserted vertices;
               ///< its edges split where those points lie on them
-    std::vector<std::array<std::uint32_t, 4>> tets;  ///< 0-based, positively oriented
+    /// 0-based, each with positive right-hand volume (handedness.h)
+    std::vector<std::array<std::uint32_t, 4>> tets;
     std::vector<CdtFace> faces;                      ///< the polygons' triangles, with markers
     Protection protection;
     PolygonInsertionCounters counters;

@@ -79,7 +79,7 @@ public:
     /// Indices of the vertices inserted so far, in order.
     const std::vector<std::uint32_t>& inserted() const { return inserted_; }
 
-    /// The solid tetrahedra, 0-based, positively oriented.
+    /// The solid tetrahedra, 0-based, with positive right-hand volume (handedness.h).
     std::vector<std::array<std::uint32_t, 4>> tets() const;
 
     /// Checks the whole mesh from outside (validate_cdt on plc(), check_complex on the storage).

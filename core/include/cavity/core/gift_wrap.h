@@ -20,7 +20,7 @@ namespace cavity::core {
 
 /// Output of gift_wrap_delaunay, in the input's own indices.
 struct GiftWrapResult {
-    std::vector<std::array<std::uint32_t, 4>> tets;  ///< positively oriented
+    std::vector<std::array<std::uint32_t, 4>> tets;  ///< positive right-hand volume (handedness.h)
     std::vector<std::array<std::uint32_t, 2>> duplicates;  ///< {point, its first occurrence}
     std::vector<std::uint32_t> redundant;  ///< weighted: points in no tetrahedron, increasing
     std::size_t hull_triangles = 0;

@@ -7,27 +7,17 @@
 #include <vector>
 
 #include "cavity/core/atomic_file.h"
+#include "cavity/core/handedness.h"
 #include "cavity/core/point_set.h"
 
 namespace cavity::core {
 
-/// A tetrahedron as four 0-based input indices.
-using Tet = std::array<std::uint32_t, 4>;
-
-/// The engine orders every tetrahedron so that orient3d(a, b, c, d) > 0 (Shewchuk's convention),
-/// which is det[b−a, c−a, d−a] < 0: a negative volume by the right-hand rule. TetGen's files, VTK's
-/// cells and scipy's users expect the opposite, positive volume. Swapping the first two vertices
-/// converts either way; everything cavity writes or hands to Python goes through it.
-constexpr Tet swap_handedness(const Tet& t) {
-    return {t[1], t[0], t[2], t[3]};
-}
-
 /// Writes PREFIX.node (every input point, numbered from points.index_base, the weight as the
 /// attribute when weighted) and PREFIX.ele (`<#tets> 4 0`, then `i v0 v1 v2 v3` numbered from
-/// points.index_base). `tets` are in the engine's orientation (orient3d > 0); the file lists each
-/// with positive volume by the right-hand rule, as TetGen does. Both files are committed together
-/// (AtomicFileGroup): on any error neither appears. Coordinates are printed so that they read back
-/// exactly. \throws Error naming the file for a failed write or a tet index outside the point set.
+/// points.index_base). `tets` have positive volume by the right-hand rule, as TetGen writes them.
+/// Both files are committed together (AtomicFileGroup): on any error neither appears. Coordinates
+/// are printed so that they read back exactly. \throws Error naming the file for a failed write or
+/// a tet index outside the point set.
 void write_tetgen(const std::filesystem::path& prefix,
                   const PointSet& points,
                   std::span<const Tet> tets);
@@ -51,8 +41,8 @@ struct VtuOptions {
 /// Writes PREFIX.vtu: a VTK XML UnstructuredGrid (Float64 points, Int64 connectivity, cell type
 /// 10 = VTK_TETRA) for ParaView, meshio and VTK. Cell data "tet_id" is each cell's number in the
 /// .ele file (points.index_base + position), "region" the markers when given; point data
-/// "weight" when weighted. `tets` are in the engine's orientation; each cell has positive volume,
-/// as VTK expects. Atomic as above. \throws Error naming the file.
+/// "weight" when weighted. `tets` have positive volume, as VTK expects its cells. Atomic as above.
+/// \throws Error naming the file.
 void write_vtu(const std::filesystem::path& prefix,
                const PointSet& points,
                std::span<const Tet> tets,
@@ -73,9 +63,9 @@ struct TetgenExtras {
     bool hull_faces = false;  ///< PREFIX.face: the convex hull's triangles
 };
 
-/// Writes PREFIX.node and PREFIX.ele listing adjacency.simplices in their order (they have
-/// positive volume already), and as asked PREFIX.neigh (`<#tets> 4`, then for each tetrahedron
-/// the ones across the facets opposite its four vertices, -1 on the hull) and PREFIX.face
+/// Writes PREFIX.node and PREFIX.ele listing adjacency.simplices in their order, and as asked
+/// PREFIX.neigh (`<#tets> 4`, then for each tetrahedron the ones across the facets opposite its
+/// four vertices, -1 on the hull) and PREFIX.face
 /// (`<#triangles> 0`, then each hull triangle counter-clockwise seen from outside, as TetGen
 /// lists boundary faces). Every number follows points.index_base; -1 stays -1. Atomic as above.
 void write_tetgen(AtomicFileGroup& group,

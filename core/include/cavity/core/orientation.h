@@ -21,14 +21,14 @@ struct OrientationCount {
 
 OrientationCount count_orientations(const PointSet& points, std::span<const Tet> tets);
 
-/// Turns tetrahedra read from `file` (positive volume: TetGen's files, VTK's cells, cavity's own
-/// since version 0.2) into the engine's orientation, which the validators take. A mesh whose every
-/// non-flat tetrahedron has negative volume is refused by a message naming the convention it
-/// follows (cavity's files before 0.2 were written so), rather than by one problem per
-/// tetrahedron. A mixed mesh is converted as it is: the validator reports each inverted one.
+/// Tetrahedra read from `file` are expected with positive volume (TetGen's files, VTK's cells,
+/// cavity's own since version 0.2), as the validators take them. A mesh whose every non-flat
+/// tetrahedron has negative volume is refused by a message naming the convention it follows
+/// (cavity's files before 0.2 were written so), rather than by one problem per tetrahedron. A mixed
+/// mesh passes: the validator reports each inverted one.
 /// \throws Error naming the file for a consistently inverted mesh.
-std::vector<Tet> engine_orientation_from_file(const std::string& file,
-                                              const PointSet& points,
-                                              std::vector<Tet> tets);
+void refuse_inverted_mesh(const std::string& file,
+                          const PointSet& points,
+                          std::span<const Tet> tets);
 
 }  // namespace cavity::core

@@ -13,8 +13,8 @@
 namespace cavity::core {
 
 struct Adjacency {
-    /// The tetrahedra (input ids, positive volume by the right-hand rule: the engine's orientation
-    /// with vertices 0 and 1 swapped), renumbered along the rank order: sorted by
+    /// The tetrahedra (input ids, positive volume by the right-hand rule, each as given),
+    /// renumbered along the rank order: sorted by
     /// their lowest-ranked vertex, so that tetrahedra near in space are near in the array.
     std::vector<Tet> simplices;
     /// neighbors[4t + i]: the tetrahedron across the facet opposite vertex i of simplices[t], or
@@ -26,8 +26,8 @@ struct Adjacency {
     std::vector<std::int32_t> vertex_to_simplex;
 };
 
-/// Renumbers `tets` (positively oriented, vertex ids < rank.size()) and matches their facets in
-/// O(m) expected time: facets are bucketed by their lowest-ranked vertex (counting sort) and
+/// Renumbers `tets` (positive right-hand volume, vertex ids < rank.size()) and matches their facets
+/// in O(m) expected time: facets are bucketed by their lowest-ranked vertex (counting sort) and
 /// paired inside each bucket (hashing), where the two other vertices identify them. `rank` is a
 /// permutation of the point ids along a space-filling curve (the insertion order). Sorting the
 /// tetrahedra by rank first makes every later pass nearly sequential: input ids of random points

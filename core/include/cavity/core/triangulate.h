@@ -32,7 +32,8 @@ struct TriangulateOptions {
 /// A (weighted) Delaunay triangulation of a point set under the symbolic perturbation, in the
 /// input's own indices.
 struct Triangulation {
-    /// Solid tetrahedra as input indices (0-based), positively oriented.
+    /// Solid tetrahedra as input indices (0-based), each with positive volume by the right-hand
+    /// rule as TetGen and VTK list them: the engine's orient3d > 0 order mirrored (handedness.h).
     std::vector<std::array<std::uint32_t, 4>> tets;
     /// {point, its first occurrence}: exact repeats, not inserted.
     std::vector<std::array<std::uint32_t, 2>> duplicates;

@@ -92,7 +92,9 @@ void run(const Prepared& prep,
         if (is_ghost(v)) {
             ++out.hull_triangles;
         } else {
-            out.tets.push_back({geometry.key(v[0]), geometry.key(v[1]), geometry.key(v[2]), geometry.key(v[3])});
+            // The stored orientation mirrored: the API hands out positive right-hand volume.
+            out.tets.push_back(
+                {geometry.key(v[1]), geometry.key(v[0]), geometry.key(v[2]), geometry.key(v[3])});
         }
     });
     if constexpr (Observer::kCounting) {

@@ -29,7 +29,8 @@ struct ValidationReport {
 /// Checks, exactly, that `tets` (0-based input indices) is the (weighted) Delaunay triangulation of
 /// `points` under cavity's symbolic perturbation (keyed on the input index), independently of how
 /// it was built:
-///  - every tetrahedron has four distinct valid vertices and orient3d > 0;
+///  - every tetrahedron has four distinct valid vertices and positive volume by the right-hand rule
+///    (orient3d < 0), as triangulate() lists them;
 ///  - every triangle has at most two tetrahedra, on opposite sides;
 ///  - the boundary triangles form a closed surface, locally convex at every edge, and the Euler
 ///    characteristic V - E + F - T is 1 (a triangulated ball): the convex hull;
