@@ -10,4 +10,6 @@ target_sources(cavity_core PRIVATE
   src/orientation.cpp
   src/tet_adjacency.cpp
   src/page_releaser.cpp
+  src/point_kd_tree.cpp
+  src/conflict_counter.cpp
 )

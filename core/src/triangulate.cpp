@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cavity/core/bootstrap.h"
+#include "cavity/core/conflict_counter.h"
 #include "cavity/core/duplicates.h"
 #include "cavity/core/error.h"
 #include "cavity/core/triangulate_observed.h"
@@ -115,6 +116,10 @@ Prepared prepare(const PointSet& input,
 Triangulation triangulate(const PointSet& points,
                           std::span<const std::uint32_t> sequence,
                           const TriangulateOptions& options) {
+    if (options.count_conflicts) {
+        ConflictCountingObserver observer;
+        return triangulate_observed(points, sequence, options, observer);
+    }
     if (options.count) {
         CountingObserver observer;
         return triangulate_observed(points, sequence, options, observer);

@@ -172,6 +172,25 @@ cp run1.ele before.ele
 cmp -s run1.ele before.ele || fail "a failed run replaced the .ele"
 "$cavity" check run1.node run1.ele --quiet || fail "a failed run broke the earlier mesh"
 
+# --count-conflicts: Theorem 5.4's counters appear in --stats (and only when asked), the same for
+# both locators, and every conflict created is deleted by the end.
+"$cavity" generate cube 500 --seed 3 -o conf.node >/dev/null
+"$cavity" triangulate conf.node -o conf --count-conflicts --stats conf.json >out.txt || fail "conflicts: failed"
+grep -q "conflicts: .* created by solid tetrahedra" out.txt || fail "conflicts: no summary line"
+for key in conflicts_created ghost_conflicts_created conflicts_deleted live_conflicts_max; do
+  grep -q "\"$key\": [1-9]" conf.json || fail "conflicts: stats lack $key"
+done
+grep -q '"conflicts_counted": true' conf.json || fail "conflicts: not marked as counted"
+"$cavity" triangulate conf.node -o conf --count-conflicts --locate conflict-graph --stats conf_cg.json --quiet ||
+  fail "conflicts: conflict graph failed"
+[ "$(grep '"conflicts_created"' conf.json)" = "$(grep '"conflicts_created"' conf_cg.json)" ] ||
+  fail "conflicts: the locators disagree"
+created=$(sed -n 's/.*"conflicts_created": \([0-9]*\).*/\1/p' conf.json)
+deleted=$(sed -n 's/.*"conflicts_deleted": \([0-9]*\).*/\1/p' conf.json)
+[ "$created" = "$deleted" ] || fail "conflicts: $created created but $deleted deleted"
+"$cavity" triangulate conf.node -o conf --stats plain.json --quiet
+grep -q '"conflicts_created"' plain.json && fail "conflicts: counted without being asked"
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures failure(s)"
   exit 1

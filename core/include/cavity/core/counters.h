@@ -32,6 +32,19 @@ struct Counters {
     std::uint64_t perturbations = 0;  ///< perturbed predicates that needed the tie-break
     std::uint64_t perturbation_cofactors = 0;
     std::uint64_t hash_probes = 0;
+    /// Conflicts (Theorem 5.4), counted only by ConflictCountingObserver (conflict_counter.h).
+    /// conflicts_created is Σj over created solid tetrahedra, j = the input points in the open
+    /// (perturbed) circumball; ghosts' conflicts, the points in front of their hull triangle, are
+    /// counted apart. Deleted: the same sums over deleted tetrahedra, whose conflicts are all still
+    /// uninserted when they die. Live: what a conflict graph keeping every conflict stores.
+    std::uint64_t conflicts_created = 0;
+    std::uint64_t ghost_conflicts_created = 0;
+    std::uint64_t conflicts_deleted = 0;
+    std::uint64_t ghost_conflicts_deleted = 0;
+    std::uint64_t live_conflicts_max =
+        0;  ///< most live conflicts (solid and ghost) after an insertion
+    std::uint64_t conflict_tests =
+        0;  ///< exact tests the counting made (its cost, not the engine's)
     /// [predicate kind][stage]: calls decided at that stage.
     std::array<std::array<std::uint64_t, predicates::kStageCount>, kPredicateKindCount> stage_calls{};
 

@@ -1,0 +1,73 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "cavity/predicates/point.h"
+
+namespace cavity::core {
+
+/// An axis-aligned box, closed.
+struct Box3 {
+    predicates::Point3 lo;
+    predicates::Point3 hi;
+};
+
+/// A static kd-tree over a point set, for counting the points of a region that is tested exactly
+/// point by point: a query descends only into boxes its caller cannot rule out, then hands each
+/// point of the remaining leaves to the caller's exact test. Built once in O(n log n) (median
+/// splits on the longest side, leaves of at most kLeafSize points); 36 bytes per point.
+class PointKdTree {
+public:
+    static constexpr std::uint32_t kLeafSize = 8;
+
+    /// Point ids are positions in `points`; the tree keeps its own copy of the points, in leaf
+    /// order for locality. \throws Error for 2^32 points or more.
+    explicit PointKdTree(std::span<const predicates::Point3> points);
+
+    /// Calls visit(id, point) for every point in a box for which may_hold(box) is true, down from
+    /// the root (so may_hold must be true for a box whenever it is for one of its sub-boxes:
+    /// a test "the region meets the box" has that property).
+    template <class MayHold, class Visit>
+    void query(MayHold&& may_hold, Visit&& visit) const {
+        if (nodes_.empty()) {
+            return;
+        }
+        std::uint32_t stack[64];
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const Node& node = nodes_[stack[--top]];
+            if (!may_hold(node.box)) {
+                continue;
+            }
+            if (node.left == 0) {
+                for (std::uint32_t k = node.begin; k < node.end; ++k) {
+                    visit(ids_[k], points_[k]);
+                }
+                continue;
+            }
+            stack[top++] = node.left + 1;
+            stack[top++] = node.left;
+        }
+    }
+
+    std::size_t size() const { return ids_.size(); }
+
+private:
+    struct Node {
+        Box3 box;
+        std::uint32_t begin;
+        std::uint32_t end;
+        std::uint32_t left;  ///< children at left and left + 1; 0 for a leaf (the root is no child)
+    };
+
+    void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth);
+
+    std::vector<Node> nodes_;
+    std::vector<std::uint32_t> ids_;
+    std::vector<predicates::Point3> points_;
+};
+
+}  // namespace cavity::core

@@ -1,0 +1,250 @@
+#include "cavity/core/conflict_counter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "cavity/predicates/orient3d.h"
+
+namespace cavity::core {
+
+namespace {
+
+constexpr double kUnit = std::numeric_limits<double>::epsilon() / 2;
+// Inside these magnitudes no square or product of three lengths below overflows or loses its
+// relative accuracy to underflow; outside them the counter tests every point exactly instead.
+constexpr double kLargest = 1e100;
+constexpr double kSmallestVolume = 1e-200;
+// Generous allowance for the few roundings of a distance (each a relative error below 4 units).
+constexpr double kDistanceSlack = 1e-14;
+
+double det3(const double m[3][3]) {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+double permanent3(const double m[3][3]) {
+    const auto a = [&](int i, int j) { return std::fabs(m[i][j]); };
+    return a(0, 0) * (a(1, 1) * a(2, 2) + a(1, 2) * a(2, 1)) +
+           a(0, 1) * (a(1, 0) * a(2, 2) + a(1, 2) * a(2, 0)) +
+           a(0, 2) * (a(1, 0) * a(2, 1) + a(1, 1) * a(2, 0));
+}
+
+double max_abs(const Point3& p) {
+    return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+}
+
+/// A ball certain to hold every point in conflict with a solid tetrahedron, or `bounded` false
+/// when no such ball can be certified in floating point.
+struct Reach {
+    bool bounded = false;
+    Point3 centre{};
+    double radius = 0;
+
+    bool excludes_distance(double computed) const {
+        return std::isfinite(computed) && computed * (1 - kDistanceSlack) > radius;
+    }
+
+    bool excludes(const Point3& q) const {
+        if (max_abs(q) > kLargest) {
+            return false;
+        }
+        const double dx = q.x - centre.x;
+        const double dy = q.y - centre.y;
+        const double dz = q.z - centre.z;
+        return excludes_distance(std::sqrt(dx * dx + dy * dy + dz * dz));
+    }
+
+    bool excludes(const Box3& b) const {
+        if (std::max(max_abs(b.lo), max_abs(b.hi)) > kLargest) {
+            return false;
+        }
+        const auto gap = [](double c, double lo, double hi) {
+            return c < lo ? lo - c : c > hi ? c - hi : 0.0;
+        };
+        const double dx = gap(centre.x, b.lo.x, b.hi.x);
+        const double dy = gap(centre.y, b.lo.y, b.hi.y);
+        const double dz = gap(centre.z, b.lo.z, b.hi.z);
+        return excludes_distance(std::sqrt(dx * dx + dy * dy + dz * dz));
+    }
+};
+
+/// The circumcentre (weighted: the orthocentre) c = a + x solves 2 (v_i - a) . x = |v_i - a|^2 -
+/// w_i + w_a for the three other vertices. Cramer's rule in floating point has a forward error
+/// bounded through the permanents (absolute-value determinants) of the systems, as in Shewchuk's
+/// filters: each determinant is off by at most 16 units of its permanent here (7 for its
+/// evaluation, the rest for the rounded differences and squares it is built from; 32 for the
+/// right-hand side's column). A point q conflicts when |q - c|^2 < |x|^2 - w_a + w_q, so no point
+/// farther from the computed centre than the bound below can.
+Reach conflict_reach(const Geometry& g, const TetVertices& t, double max_weight) {
+    Reach reach;
+    const Point3& a = g.point(t[0]);
+    if (max_abs(a) > kLargest) {
+        return reach;
+    }
+    const double wa = g.weighted() ? g.weighted_point(t[0]).w : 0.0;
+    double p[3][3];
+    double rhs[3];
+    double rhs_abs[3];
+    for (int i = 0; i < 3; ++i) {
+        const Point3& v = g.point(t[static_cast<std::size_t>(i) + 1]);
+        if (max_abs(v) > kLargest) {
+            return reach;
+        }
+        p[i][0] = v.x - a.x;
+        p[i][1] = v.y - a.y;
+        p[i][2] = v.z - a.z;
+        const double square = p[i][0] * p[i][0] + p[i][1] * p[i][1] + p[i][2] * p[i][2];
+        const double wv =
+            g.weighted() ? g.weighted_point(t[static_cast<std::size_t>(i) + 1]).w : 0.0;
+        rhs[i] = (square - (wv - wa)) / 2;
+        rhs_abs[i] = (square + std::fabs(wv) + std::fabs(wa)) / 2;
+    }
+    const double d = det3(p);
+    const double d_error = 16 * kUnit * permanent3(p);
+    if (!std::isfinite(d) || !(std::fabs(d) > 4 * d_error) || std::fabs(d) < kSmallestVolume) {
+        return reach;
+    }
+    double x[3];
+    double x_error_squared = 0;
+    for (int k = 0; k < 3; ++k) {
+        double m[3][3];
+        double m_abs[3][3];
+        for (int i = 0; i < 3; ++i) {
+            for (int c = 0; c < 3; ++c) {
+                m[i][c] = c == k ? rhs[i] : p[i][c];
+                m_abs[i][c] = c == k ? rhs_abs[i] : p[i][c];
+            }
+        }
+        const double n = det3(m);
+        x[k] = n / d;
+        const double e = (32 * kUnit * permanent3(m_abs) + std::fabs(x[k]) * d_error) /
+                             (std::fabs(d) - d_error) +
+                         2 * kUnit * std::fabs(x[k]);
+        x_error_squared += e * e;
+    }
+    const double x_error = std::sqrt(x_error_squared) * (1 + kDistanceSlack);
+    const double x_norm = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) * (1 + kDistanceSlack);
+    reach.centre = {a.x + x[0], a.y + x[1], a.z + x[2]};
+    // The centre's own rounding: one addition per coordinate.
+    const double centre_error = x_error + 2 * kUnit * (max_abs(a) + max_abs(reach.centre));
+    double reach_squared = (x_norm + x_error) * (x_norm + x_error);
+    if (g.weighted()) {
+        reach_squared = reach_squared - wa + max_weight;
+        reach_squared +=
+            kDistanceSlack * (std::fabs(reach_squared) + std::fabs(wa) + std::fabs(max_weight));
+    }
+    reach.radius =
+        (reach_squared > 0 ? std::sqrt(reach_squared) : 0.0) * (1 + kDistanceSlack) + centre_error;
+    reach.bounded = std::isfinite(reach.radius) && max_abs(reach.centre) <= kLargest &&
+                    reach.radius <= kLargest;
+    return reach;
+}
+
+}  // namespace
+
+void ConflictCountingObserver::on_start(const Geometry& geometry) {
+    geometry_ = &geometry;
+    std::vector<Point3> points(geometry.size());
+    for (VertexId v = 0; v < geometry.size(); ++v) {
+        points[v] = geometry.point(v);
+    }
+    tree_ = std::make_unique<PointKdTree>(points);
+    max_weight_ = 0;
+    if (geometry.weighted() && geometry.size() > 0) {
+        max_weight_ = geometry.weighted_point(0).w;
+        for (VertexId v = 1; v < geometry.size(); ++v) {
+            max_weight_ = std::max(max_weight_, geometry.weighted_point(v).w);
+        }
+    }
+    histogram_.assign(kHistogramBins, 0);
+}
+
+std::uint64_t ConflictCountingObserver::count_solid(const TetVertices& v) {
+    const Reach reach = conflict_reach(*geometry_, v, max_weight_);
+    std::uint64_t j = 0;
+    std::uint64_t tests = 0;
+    tree_->query([&](const Box3& box) { return !reach.bounded || !reach.excludes(box); },
+                 [&](std::uint32_t id, const Point3& q) {
+                     if (id == v[0] || id == v[1] || id == v[2] || id == v[3] ||
+                         (reach.bounded && reach.excludes(q))) {
+                         return;
+                     }
+                     ++tests;
+                     j += geometry_->conflicts_solid(v, id, nullptr) ? 1 : 0;
+                 });
+    totals.conflict_tests += tests;
+    return j;
+}
+
+std::uint64_t ConflictCountingObserver::count_ghost(const TetVertices& v) {
+    const Point3& a = geometry_->point(v[0]);
+    const Point3& b = geometry_->point(v[1]);
+    const Point3& c = geometry_->point(v[2]);
+    // The engine's ghost conflict is "in front of the hull triangle", or on its plane and inside
+    // the perturbed circumdisk: a box whose eight corners are strictly behind the plane holds
+    // none (the halfspace is convex), decided exactly.
+    const auto behind = [&](const Box3& box) {
+        for (int k = 0; k < 8; ++k) {
+            const Point3 corner{(k & 1) ? box.hi.x : box.lo.x,
+                                (k & 2) ? box.hi.y : box.lo.y,
+                                (k & 4) ? box.hi.z : box.lo.z};
+            if (predicates::orient3d(a, b, c, corner) != Sign::kNeg) {
+                return false;
+            }
+        }
+        return true;
+    };
+    // The bootstrap four (vertex ids 0-3) are inside every hull: the engine's own reference.
+    static constexpr std::array<VertexId, 4> kBootstrap{0, 1, 2, 3};
+    std::uint64_t j = 0;
+    std::uint64_t tests = 0;
+    tree_->query([&](const Box3& box) { return !behind(box); },
+                 [&](std::uint32_t id, const Point3&) {
+                     if (id == v[0] || id == v[1] || id == v[2]) {
+                         return;
+                     }
+                     ++tests;
+                     j += geometry_->conflicts_ghost(v, id, kBootstrap, nullptr) ? 1 : 0;
+                 });
+    totals.conflict_tests += tests;
+    return j;
+}
+
+void ConflictCountingObserver::on_tet_created(TetId t, const TetVertices& v, std::uint64_t) {
+    const bool ghost = is_ghost(v);
+    const std::uint64_t j = ghost ? count_ghost(v) : count_solid(v);
+    if (j_of_.size() <= t) {
+        j_of_.resize(std::max<std::size_t>(t + 1, 2 * j_of_.size()), 0);
+        ghost_of_.resize(j_of_.size(), 0);
+    }
+    j_of_[t] = static_cast<std::uint32_t>(j);
+    ghost_of_[t] = ghost ? 1 : 0;
+    if (ghost) {
+        totals.ghost_conflicts_created += j;
+    } else {
+        totals.conflicts_created += j;
+        ++histogram_[std::min<std::uint64_t>(j, kHistogramBins - 1)];
+    }
+    step_.created += j;
+    live_ += j;
+}
+
+void ConflictCountingObserver::on_tet_deleted(TetId t, std::uint64_t) {
+    const std::uint64_t j = j_of_[t];
+    (ghost_of_[t] != 0 ? totals.ghost_conflicts_deleted : totals.conflicts_deleted) += j;
+    step_.deleted += j;
+    live_ -= j;
+}
+
+void ConflictCountingObserver::on_insertion(const InsertionRecord&) {
+    step_.live = live_;
+    totals.live_conflicts_max = std::max(totals.live_conflicts_max, live_);
+    if (keep_steps_) {
+        steps_.push_back(step_);
+    }
+    step_ = {};
+}
+
+}  // namespace cavity::core
