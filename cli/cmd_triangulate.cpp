@@ -34,6 +34,7 @@ struct TriangulateArgs {
     std::string order = "brio";
     std::string locate = "walk";
     std::string storage = "array";
+    std::string bootstrap = "widest";
     std::string format = "tetgen";
     std::string stats;
     std::vector<std::uint64_t> delete_ids;
@@ -124,6 +125,7 @@ void write_stats(core::AtomicFileGroup& files,
     json.string("order", args.order);
     json.string("locate", args.locate);
     json.string("storage", args.storage);
+    json.string("bootstrap", args.bootstrap);
     json.integer("seed", args.seed);
     json.begin_object("timings");
     json.number("read_s", timings.read_s);
@@ -253,6 +255,7 @@ void run_triangulate(const TriangulateArgs& args) {
     options.locate = core::parse_locate_kind(args.locate);
     options.storage = core::parse_storage_kind(args.storage);
     options.seed = args.seed;
+    options.bootstrap = core::parse_bootstrap_rule(args.bootstrap);
     options.count = !args.stats.empty();
     options.count_conflicts = args.count_conflicts;
     ProgressBar bar("triangulating", !args.quiet);
@@ -386,10 +389,19 @@ void add_triangulate_command(CLI::App& app) {
     cmd->add_option("--storage", args->storage, "tetrahedron storage")
         ->check(CLI::IsMember({"array", "hash"}))
         ->capture_default_str();
+    cmd->add_option("--bootstrap",
+                    args->bootstrap,
+                    "first tetrahedron: the widest of the next 64 candidates, or the first four "
+                    "affinely independent points of the order (keeps a uniform order uniform)")
+        ->check(CLI::IsMember({"widest", "first"}))
+        ->capture_default_str();
     cmd->add_option("--seed", args->seed, "seed of the random choices (order, walk)")
         ->transform(integer_in("--seed", 0, UINT64_MAX))
         ->capture_default_str();
-    cmd->add_option("--brio-ratio", args->brio_ratio, "BRIO: fraction of points in each later round")
+    cmd->add_option("--brio-ratio",
+                    args->brio_ratio,
+                    "BRIO: fraction of the points carried into the earlier rounds, in [0, 1) "
+                    "(Amenta-Choi-Rote's, CGAL's and geogram's convention: 1/8 there)")
         ->capture_default_str();
     cmd->add_flag("--no-reverse-rounds", args->no_reverse_rounds,
                   "BRIO: do not reverse the curve order on alternate rounds");

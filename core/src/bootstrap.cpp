@@ -81,8 +81,19 @@ constexpr std::size_t kShapeCandidates = 64;
 
 }  // namespace
 
+BootstrapRule parse_bootstrap_rule(std::string_view name) {
+    if (name == "widest") {
+        return BootstrapRule::kWidest;
+    }
+    if (name == "first") {
+        return BootstrapRule::kFirst;
+    }
+    throw Error("unknown bootstrap rule '" + std::string(name) + "' (widest, first)");
+}
+
 std::array<std::size_t, 4> find_bootstrap(std::span<const Point3> points,
-                                          std::span<const std::uint32_t> sequence) {
+                                          std::span<const std::uint32_t> sequence,
+                                          BootstrapRule rule) {
     const auto at = [&](std::size_t i) -> const Point3& { return points[sequence[i]]; };
     const std::size_t n = sequence.size();
     if (n == 0) {
@@ -99,10 +110,12 @@ std::array<std::size_t, 4> find_bootstrap(std::span<const Point3> points,
     // collinear; among it and the next few valid ones, take the widest triangle, and likewise for
     // the fourth point, so that the bootstrap tetrahedron is not needlessly thin (the conflict
     // graph needs a representable point strictly inside it).
+    // kFirst weighs one candidate only: the first valid one.
+    const std::size_t candidates = rule == BootstrapRule::kFirst ? 1 : kShapeCandidates;
     const Point3 e1 = direction(at(0), at(i1));
     std::size_t i2 = n;
     double best = -1;
-    for (std::size_t i = i1 + 1, seen = 0; i < n && seen < kShapeCandidates; ++i) {
+    for (std::size_t i = i1 + 1, seen = 0; i < n && seen < candidates; ++i) {
         if (collinear(at(0), at(i1), at(i))) {
             continue;
         }
@@ -120,7 +133,7 @@ std::array<std::size_t, 4> find_bootstrap(std::span<const Point3> points,
     const Point3 normal = cross(e1, direction(at(0), at(i2)));
     std::size_t i3 = n;
     best = -1;
-    for (std::size_t i = 1, seen = 0; i < n && seen < kShapeCandidates; ++i) {
+    for (std::size_t i = 1, seen = 0; i < n && seen < candidates; ++i) {
         if (i == i1 || i == i2 ||
             predicates::orient3d(at(0), at(i1), at(i2), at(i)) == Sign::kZero) {
             continue;

@@ -12,7 +12,7 @@ namespace cavity::core {
 
 namespace {
 
-// With a ratio p near 0 the number of rounds, about ln(n) / p, would explode.
+// With a ratio ρ near 1 the number of rounds, about ln(n) / (1 - ρ), would explode.
 constexpr std::uint32_t kMaxBrioRounds = 4096;
 
 std::vector<std::uint32_t> identity(std::size_t n) {
@@ -31,11 +31,11 @@ std::vector<std::uint32_t> random_order(std::size_t n, std::uint64_t seed) {
     return sequence;
 }
 
-// The last round R is the first whose expected occupancy of round 0, n (1-p)^R, is at most one
-// point; for p = 1/2 that is R = ceil(log2 n), the book's round count.
+// The last round R is the first whose expected occupancy of round 0, n ρ^R, is at most one point;
+// for ρ = 1/2 that is R = ceil(log2 n), the book's round count.
 std::uint32_t brio_last_round(std::size_t n, double ratio) {
     std::uint32_t last = 0;
-    for (double share = static_cast<double>(n); share > 1.0; share *= 1.0 - ratio) {
+    for (double share = static_cast<double>(n); share > 1.0; share *= ratio) {
         if (++last > kMaxBrioRounds) {
             throw Error("brio_ratio " + std::to_string(ratio) + " needs more than " +
                         std::to_string(kMaxBrioRounds) + " rounds");
@@ -46,8 +46,8 @@ std::uint32_t brio_last_round(std::size_t n, double ratio) {
 
 InsertionOrder brio_order(std::span<const Point3> points, const OrderOptions& options) {
     const double ratio = options.brio_ratio;
-    if (!(ratio > 0.0 && ratio <= 1.0)) {
-        throw Error("brio_ratio must be in (0, 1], got " + std::to_string(ratio));
+    if (!(ratio >= 0.0 && ratio < 1.0)) {
+        throw Error("brio_ratio must be in [0, 1), got " + std::to_string(ratio));
     }
     const std::size_t n = points.size();
     InsertionOrder order;
@@ -60,7 +60,9 @@ InsertionOrder brio_order(std::span<const Point3> points, const OrderOptions& op
     std::vector<std::uint32_t> round_size(last + 1, 0);
     for (std::size_t i = 0; i < n; ++i) {
         std::uint32_t round = last;
-        while (round > 0 && !(random.uniform01() < ratio)) {
+        // Down a round with probability ρ; written so that ρ = 1/2 draws the same rounds from the
+        // same seed as before the ratio took the literature's meaning.
+        while (round > 0 && !(random.uniform01() < 1.0 - ratio)) {
             --round;
         }
         round_of[i] = round;

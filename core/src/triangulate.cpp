@@ -72,6 +72,7 @@ void check_input(const PointSet& input, std::span<const std::uint32_t> sequence)
 
 Prepared prepare(const PointSet& input,
                  std::span<const std::uint32_t> sequence,
+                 BootstrapRule rule,
                  Triangulation& out) {
     check_input(input, sequence);
     const auto first = first_occurrences(input.points, input.weights);
@@ -87,7 +88,7 @@ Prepared prepare(const PointSet& input,
             out.duplicates.push_back({i, first[i]});
         }
     }
-    const auto boot = find_bootstrap(input.points, order);
+    const auto boot = find_bootstrap(input.points, order, rule);
     // Move the bootstrap four to the front, keeping the relative order of the rest.
     std::vector<std::uint32_t> seq;
     seq.reserve(order.size());

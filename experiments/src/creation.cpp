@@ -12,7 +12,10 @@ namespace cavity::experiments {
 
 CreationAudit audit_creation(const core::PointSet& points, std::span<const std::uint32_t> sequence) {
     LifeCycleObserver observer;
+    // Proposition 5.2's identity holds for an exchangeable order: the bootstrap must be the
+    // sequence's own first four, not the widest of 64 candidates, which biases Σj upwards.
     core::TriangulateOptions options;
+    options.bootstrap = core::BootstrapRule::kFirst;
     core::triangulate_observed(points, sequence, options, observer);
     CreationAudit audit;
     const auto& p = points.points;

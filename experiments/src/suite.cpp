@@ -222,8 +222,8 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
             const std::string& w = single();
             char* stop = nullptr;
             suite.brio_ratio = std::strtod(w.c_str(), &stop);
-            if (stop != w.c_str() + w.size() || !(suite.brio_ratio > 0 && suite.brio_ratio <= 1)) {
-                reader.fail("brio-ratio must be a number in (0, 1], not '" + w + "'");
+            if (stop != w.c_str() + w.size() || !(suite.brio_ratio >= 0 && suite.brio_ratio < 1)) {
+                reader.fail("brio-ratio must be a number in [0, 1), not '" + w + "'");
             }
         } else if (key == "n.quick" || key == "n.full") {
             (key == "n.quick" ? suite.quick : suite.full).sizes = reader.integers(words);

@@ -191,6 +191,13 @@ deleted=$(sed -n 's/.*"conflicts_deleted": \([0-9]*\).*/\1/p' conf.json)
 "$cavity" triangulate conf.node -o conf --stats plain.json --quiet
 grep -q '"conflicts_created"' plain.json && fail "conflicts: counted without being asked"
 
+# --bootstrap first keeps the order's own first four; a rule name outside the list is a usage error.
+"$cavity" triangulate conf.node -o boot --bootstrap first --order random --check --stats boot.json --quiet ||
+  fail "bootstrap first: failed"
+grep -q '"bootstrap": "first"' boot.json || fail "bootstrap: not in the stats"
+"$cavity" triangulate conf.node -o boot --bootstrap best --quiet 2>/dev/null
+[ $? -eq 2 ] || fail "bootstrap: an unknown rule is not a usage error"
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures failure(s)"
   exit 1

@@ -24,13 +24,15 @@ struct Observed {
 };
 
 Observed observe(const core::PointSet& points,
-        std::span<const std::uint32_t> sequence,
-        core::LocateKind locate,
-           core::StorageKind storage) {
+                 std::span<const std::uint32_t> sequence,
+                 core::LocateKind locate,
+                 core::StorageKind storage,
+                 core::BootstrapRule bootstrap = core::BootstrapRule::kWidest) {
     LifeCycleObserver observer;
     core::TriangulateOptions options;
     options.locate = locate;
     options.storage = storage;
+    options.bootstrap = bootstrap;
     core::triangulate_observed(points, sequence, options, observer);
     std::vector<std::uint32_t> inserted(points.size());
     for (std::uint32_t i = 0; i < points.size(); ++i) {
@@ -137,8 +139,14 @@ TEST(LifeCycle, AuditFindsNoViolationAndCountsEveryCreatedTetrahedron) {
         created += count;
     }
     EXPECT_EQ(audit.violations, 0u);
+    // The audit takes the sequence's own first four as the bootstrap (an exchangeable order).
     EXPECT_EQ(created,
-              solid(observe(points, sequence, core::LocateKind::kWalk, core::StorageKind::kArray).lives)
+              solid(observe(points,
+                            sequence,
+                            core::LocateKind::kWalk,
+                            core::StorageKind::kArray,
+                            core::BootstrapRule::kFirst)
+                        .lives)
                   .size());
 }
 

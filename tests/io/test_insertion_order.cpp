@@ -217,28 +217,32 @@ TEST(MortonSort, MatchesInterleavedBitsOnAGrid) {
 
 TEST(Brio, RoundsHaveGeometricSizes) {
     const PointSet cube = generate_points("cube", 100000, 8);
-    for (const double ratio : {0.5, 0.25}) {
+    // ρ is the fraction carried into earlier rounds: 1/2 (Amenta-Choi-Rote), 1/8 (CGAL, geogram).
+    for (const double ratio : {0.5, 0.25, 0.125}) {
         SCOPED_TRACE(ratio);
         const auto order = make_insertion_order(cube.points, {OrderKind::kBrio, 3, ratio});
         const std::size_t n = cube.size();
-        // The last round R is the least with n (1-p)^R <= 1: 17 for p = 1/2 (2^17 > 10^5).
+        // The last round R is the least with n ρ^R <= 1: 17 for ρ = 1/2 (2^17 > 10^5), 6 for 1/8.
         std::size_t rounds = 0;
-        for (double share = static_cast<double>(n); share > 1.0; share *= 1.0 - ratio) {
+        for (double share = static_cast<double>(n); share > 1.0; share *= ratio) {
             ++rounds;
         }
         ASSERT_EQ(order.round_begin.size(), rounds + 1);
         if (ratio == 0.5) {
             EXPECT_EQ(rounds, 17u);
         }
+        if (ratio == 0.125) {
+            EXPECT_EQ(rounds, 6u);
+        }
         EXPECT_EQ(order.round_begin[0], 0u);
         ASSERT_TRUE(std::is_sorted(order.round_begin.begin(), order.round_begin.end()));
-        // Round R - j holds each point with probability p (1-p)^j: check the six largest within
-        // six standard deviations.
-        for (std::size_t j = 0; j < 6; ++j) {
+        // Round R - j holds each point with probability (1-ρ) ρ^j: check the largest within six
+        // standard deviations (the last round holds 7/8 of the points for ρ = 1/8).
+        for (std::size_t j = 0; j < std::min<std::size_t>(rounds, 6); ++j) {
             const std::size_t r = rounds - j;
             const std::size_t end = r + 1 < order.round_begin.size() ? order.round_begin[r + 1] : n;
             const double size = static_cast<double>(end - order.round_begin[r]);
-            const double q = ratio * std::pow(1.0 - ratio, static_cast<double>(j));
+            const double q = (1.0 - ratio) * std::pow(ratio, static_cast<double>(j));
             const double mean = static_cast<double>(n) * q;
             const double sigma = std::sqrt(mean * (1.0 - q));
             EXPECT_NEAR(size, mean, 6.0 * sigma) << "round " << r;
@@ -270,12 +274,15 @@ TEST(Brio, RoundsAreHilbertSortedAndAlternate) {
 
 TEST(Brio, RejectsBadRatios) {
     const PointSet cube = generate_points("cube", 10, 1);
-    for (const double ratio : {0.0, -0.5, 1.5, std::numeric_limits<double>::quiet_NaN(), 1e-9}) {
+    for (const double ratio :
+         {1.0, -0.5, 1.5, std::numeric_limits<double>::quiet_NaN(), 1.0 - 1e-9}) {
         EXPECT_THROW(make_insertion_order(cube.points, {OrderKind::kBrio, 0, ratio}), Error)
             << ratio;
     }
-    const auto all_last = make_insertion_order(cube.points, {OrderKind::kBrio, 0, 1.0});
+    // ρ = 0 carries nothing back: the whole set in the last round, along the curve.
+    const auto all_last = make_insertion_order(cube.points, {OrderKind::kBrio, 0, 0.0});
     EXPECT_TRUE(is_permutation_of_indices(all_last.sequence, 10));
+    EXPECT_EQ(all_last.round_begin.back(), 0u);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cavity/core/bootstrap.h"
 #include "cavity/core/counters.h"
 #include "cavity/core/point_set.h"
 
@@ -29,6 +30,9 @@ struct TriangulateOptions {
     /// per conflict: Σj ≈ 81 n ln n in a uniform cube.
     bool count_conflicts = false;
     std::uint64_t seed = 0;   ///< the walk's stochastic choices
+    /// How the first tetrahedron is taken from the sequence (bootstrap.h): kFirst keeps the
+    /// sequence as it is for points in general position, as exact identities need.
+    BootstrapRule bootstrap = BootstrapRule::kWidest;
     /// Called now and then with (points processed, total); may be empty.
     std::function<void(std::size_t, std::size_t)> progress;
 };

@@ -27,10 +27,13 @@ struct Prepared {
 };
 
 /// Checks the input (finite coordinates and weights, one weight per point, the sequence a
-/// permutation), removes repeats (keeping the lowest index), puts the bootstrap four first and lays
-/// the points out in insertion order. Throws Error naming the problem, or when there is no 3D
-/// triangulation.
-Prepared prepare(const PointSet& input, std::span<const std::uint32_t> sequence, Triangulation& out);
+/// permutation), removes repeats (keeping the lowest index), puts the bootstrap four (by `rule`)
+/// first and lays the points out in insertion order. Throws Error naming the problem, or when there
+/// is no 3D triangulation.
+Prepared prepare(const PointSet& input,
+                 std::span<const std::uint32_t> sequence,
+                 BootstrapRule rule,
+                 Triangulation& out);
 
 template <class Storage, class Observer, class Locator>
 void run(const Prepared& prep,
@@ -170,7 +173,7 @@ Triangulation triangulate_observed(const PointSet& points,
                                    const TriangulateOptions& options,
                                    Observer& observer) {
     Triangulation out;
-    const detail::Prepared prep = detail::prepare(points, sequence, out);
+    const detail::Prepared prep = detail::prepare(points, sequence, options.bootstrap, out);
     detail::dispatch_storage(prep, options, observer, out);
     return out;
 }

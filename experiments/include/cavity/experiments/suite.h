@@ -21,7 +21,8 @@
 ///                                       (default random)
 ///   locate    walk|conflict-graph...    (default walk)
 ///   storage   array|hash...             (default array)
-///   brio-ratio R                        (default 0.5)
+///   brio-ratio R                        (default 0.5) fraction carried into earlier rounds,
+///                                       in [0, 1): CGAL's and geogram's 1/8 is 0.125
 ///   orders.quick R  orders.full R       creation: insertion orders per point set (default 100)
 ///   deletions.quick K deletions.full K  deletion: vertices deleted per run (default 100; at
 ///                                       most half the points)
