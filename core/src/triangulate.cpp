@@ -19,7 +19,11 @@ LocateKind parse_locate_kind(std::string_view name) {
     if (name == "conflict-graph") {
         return LocateKind::kConflictGraph;
     }
-    throw Error("unknown point location '" + std::string(name) + "' (walk, conflict-graph)");
+    if (name == "conflict-graph-all") {
+        return LocateKind::kFullConflictGraph;
+    }
+    throw Error("unknown point location '" + std::string(name) +
+                "' (walk, conflict-graph, conflict-graph-all)");
 }
 
 StorageKind parse_storage_kind(std::string_view name) {
@@ -110,6 +114,29 @@ Prepared prepare(const PointSet& input,
     }
     Geometry geometry(std::move(points), seq, std::move(weights));
     return {std::move(seq), std::move(geometry)};
+}
+
+void merge_conflict_tally(const ConflictTally& tally, Counters& counters, bool counted) {
+    if (!counted) {
+        counters.conflicts_created = tally.created;
+        counters.ghost_conflicts_created = tally.ghost_created;
+        counters.conflicts_deleted = tally.deleted;
+        counters.ghost_conflicts_deleted = tally.ghost_deleted;
+        counters.live_conflicts_max = tally.live_max;
+        return;
+    }
+    if (counters.conflicts_created != tally.created ||
+        counters.ghost_conflicts_created != tally.ghost_created ||
+        counters.conflicts_deleted != tally.deleted ||
+        counters.ghost_conflicts_deleted != tally.ghost_deleted ||
+        counters.live_conflicts_max != tally.live_max) {
+        throw Error("internal error: the full conflict graph created " +
+                        std::to_string(tally.created) + " + " +
+                        std::to_string(tally.ghost_created) + " conflicts, the conflict counter " +
+                        std::to_string(counters.conflicts_created) + " + " +
+                        std::to_string(counters.ghost_conflicts_created),
+                    ErrorKind::kInternal);
+    }
 }
 
 }  // namespace detail

@@ -225,7 +225,9 @@ Delaunay(points, weights=None, order="brio", locate="walk", seed=0, storage="arr
 points   : (n, 3) array of finite numbers (converted to float64).
 weights  : None, or (n,) finite weights: the regular triangulation of the weighted points.
 order    : insertion order: "brio" (default), "hilbert", "zorder", "random", "input".
-locate   : point location: "walk" (default) or "conflict-graph".
+locate   : point location: "walk" (default), "conflict-graph" (one cell per point, the book's
+           §5.4) or "conflict-graph-all" (every conflict kept; stats then hold Theorem 5.4's
+           conflicts_created).
 seed     : seed of the order's and the walk's random choices (results are reproducible).
 storage  : "array" (default) or "hash" (the book's face hash table).
 progress : None, or a callable progress(done, total) called now and then (with the GIL).

@@ -185,6 +185,11 @@ grep -q '"conflicts_counted": true' conf.json || fail "conflicts: not marked as 
   fail "conflicts: conflict graph failed"
 [ "$(grep '"conflicts_created"' conf.json)" = "$(grep '"conflicts_created"' conf_cg.json)" ] ||
   fail "conflicts: the locators disagree"
+# The full conflict graph counts them itself, always, and the same.
+"$cavity" triangulate conf.node -o conf --locate conflict-graph-all --stats conf_all.json --quiet ||
+  fail "conflicts: the full conflict graph failed"
+[ "$(grep '"conflicts_created"' conf.json)" = "$(grep '"conflicts_created"' conf_all.json)" ] ||
+  fail "conflicts: the full conflict graph disagrees with the counter"
 created=$(sed -n 's/.*"conflicts_created": \([0-9]*\).*/\1/p' conf.json)
 deleted=$(sed -n 's/.*"conflicts_deleted": \([0-9]*\).*/\1/p' conf.json)
 [ "$created" = "$deleted" ] || fail "conflicts: $created created but $deleted deleted"

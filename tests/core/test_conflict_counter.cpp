@@ -176,5 +176,41 @@ TEST(ConflictCounter, TheSameForEveryLocatorAndStorage) {
     EXPECT_EQ(hashed.counters.conflicts_created, walk.conflicts_created);
 }
 
+// The two independent counts: the full conflict graph's lists and the kd-tree counter agree to the
+// unit (run together, the engine checks it and throws otherwise), on random, degenerate and
+// weighted sets, for every order.
+TEST(ConflictCounter, TheFullConflictGraphCountsTheSame) {
+    WeightSpec weights;
+    weights.kind = WeightSpec::Kind::kUniform;
+    weights.b = 0.02;
+    const std::vector<PointSet> sets = {generate_points("cube", 2000, 1),
+                                        generate_points("grid", 343, 2),
+                                        generate_points("cospherical", 200, 3),
+                                        generate_points("skew-lines", 120, 4),
+                                        generate_points("ball", 800, 5, weights)};
+    for (const PointSet& points : sets) {
+        for (const OrderKind kind : {OrderKind::kRandom, OrderKind::kBrio, OrderKind::kHilbert}) {
+            OrderOptions order;
+            order.kind = kind;
+            order.seed = 9;
+            const InsertionOrder sequence = make_insertion_order(points.points, order);
+            TriangulateOptions options;
+            options.locate = LocateKind::kFullConflictGraph;
+            options.count = true;
+            const Counters graph = triangulate(points, sequence.sequence, options).counters;
+            options.locate = LocateKind::kWalk;
+            options.count_conflicts = true;
+            const Counters counted = triangulate(points, sequence.sequence, options).counters;
+            EXPECT_EQ(graph.conflicts_created, counted.conflicts_created);
+            EXPECT_EQ(graph.ghost_conflicts_created, counted.ghost_conflicts_created);
+            EXPECT_EQ(graph.conflicts_deleted, counted.conflicts_deleted);
+            EXPECT_EQ(graph.live_conflicts_max, counted.live_conflicts_max);
+            EXPECT_GT(graph.conflicts_created, 0u);
+            options.locate = LocateKind::kFullConflictGraph;
+            EXPECT_NO_THROW(triangulate(points, sequence.sequence, options));
+        }
+    }
+}
+
 }  // namespace
 }  // namespace cavity::core

@@ -27,7 +27,8 @@ TEST_P(Variants, ValidAndIdenticalForEveryOrderLocatorAndStorage) {
     std::vector<std::array<std::uint32_t, 4>> reference;
     for (OrderKind order : {OrderKind::kInput, OrderKind::kRandom, OrderKind::kBrio,
                             OrderKind::kHilbert, OrderKind::kZOrder}) {
-        for (LocateKind locate : {LocateKind::kWalk, LocateKind::kConflictGraph}) {
+        for (LocateKind locate :
+             {LocateKind::kWalk, LocateKind::kConflictGraph, LocateKind::kFullConflictGraph}) {
             for (StorageKind storage : {StorageKind::kArray, StorageKind::kHash}) {
                 core::OrderOptions order_options;
                 order_options.kind = order;

@@ -61,7 +61,9 @@ TEST(Weighted, RandomWeightsValidAndOrderIndependent) {
         ASSERT_TRUE(report.ok()) << dist << ": " << (report.problems.empty() ? "" : report.problems[0]);
         EXPECT_EQ(report.redundant, first.redundant.size()) << dist;
         for (auto order : {core::OrderKind::kInput, core::OrderKind::kRandom}) {
-            for (auto locate : {core::LocateKind::kWalk, core::LocateKind::kConflictGraph}) {
+            for (auto locate : {core::LocateKind::kWalk,
+                                core::LocateKind::kConflictGraph,
+                                core::LocateKind::kFullConflictGraph}) {
                 core::Triangulation other;
                 EXPECT_EQ(build(points, order, locate, &other), reference) << dist;
                 EXPECT_EQ(other.redundant, first.redundant) << dist;

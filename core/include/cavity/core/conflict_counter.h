@@ -32,6 +32,8 @@ struct ConflictStep {
 /// per insertion, `steps()` (when asked) and the histogram of j over created solid tetrahedra.
 class ConflictCountingObserver : public CountingObserver {
 public:
+    static constexpr bool kCountsConflicts = true;
+
     /// Exact bins of the j histogram; larger j are summed into the last bin.
     static constexpr std::size_t kHistogramBins = 4097;
 

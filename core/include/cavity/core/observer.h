@@ -14,6 +14,8 @@ namespace cavity::core {
 /// engine must be instantiated with the derived type: see triangulate_observed.h).
 struct NullObserver {
     static constexpr bool kCounting = false;
+    /// True for ConflictCountingObserver, which fills the conflict fields of Counters.
+    static constexpr bool kCountsConflicts = false;
 
     Counters* counters() { return nullptr; }
 

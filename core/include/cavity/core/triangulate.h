@@ -14,11 +14,14 @@
 namespace cavity::core {
 
 /// Point location (§5.4 conflict graph, §5.5 walking).
-enum class LocateKind { kWalk, kConflictGraph };
+/// kFullConflictGraph keeps every conflict of every tetrahedron (Clarkson–Shor), the algorithm
+/// Theorem 5.4 analyses; it counts the conflicts as it goes.
+enum class LocateKind { kWalk, kConflictGraph, kFullConflictGraph };
 /// Storage (§5.1 face hash table, or the compact array layout).
 enum class StorageKind { kArray, kHash };
 
-LocateKind parse_locate_kind(std::string_view name);    // "walk", "conflict-graph"; throws Error
+/// "walk", "conflict-graph", "conflict-graph-all"; throws Error.
+LocateKind parse_locate_kind(std::string_view name);
 StorageKind parse_storage_kind(std::string_view name);  // "array", "hash"; throws Error
 
 struct TriangulateOptions {

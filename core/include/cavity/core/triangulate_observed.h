@@ -8,6 +8,7 @@
 #include "cavity/core/conflict_graph.h"
 #include "cavity/core/error.h"
 #include "cavity/core/face_hash_storage.h"
+#include "cavity/core/full_conflict_graph.h"
 #include "cavity/core/seek_conflict.h"
 #include "cavity/core/triangulate.h"
 #include "cavity/core/walk.h"
@@ -34,6 +35,11 @@ Prepared prepare(const PointSet& input,
                  std::span<const std::uint32_t> sequence,
                  BootstrapRule rule,
                  Triangulation& out);
+
+/// The full conflict graph's own count of the conflicts goes into the counters; when the
+/// conflict-counting observer has counted them too, the two independent counts must agree to the
+/// unit. \throws Error ("internal error") when they do not.
+void merge_conflict_tally(const ConflictTally& tally, Counters& counters, bool counted);
 
 template <class Storage, class Observer, class Locator>
 void run(const Prepared& prep,
@@ -108,6 +114,9 @@ void run(const Prepared& prep,
             out.counters.hash_probes = storage.probes();
         }
     }
+    if constexpr (Observer::kCounting && requires { locator.tally(); }) {
+        merge_conflict_tally(locator.tally(), out.counters, Observer::kCountsConflicts);
+    }
     if (options.progress) {
         options.progress(n, n);
     }
@@ -144,6 +153,9 @@ void dispatch_locator(const Prepared& prep,
     Storage storage;
     if (options.locate == LocateKind::kWalk) {
         WalkLocator locator(options.seed);
+        run(prep, options, locator, storage, observer, out);
+    } else if (options.locate == LocateKind::kFullConflictGraph) {
+        FullConflictGraph locator(options.seed);
         run(prep, options, locator, storage, observer, out);
     } else {
         ConflictGraph locator;

@@ -19,7 +19,7 @@
 ///   seeds.quick S... seeds.full S...    point (and order) seeds; `A..B` is a range (required)
 ///   order     NAME...                   input random brio brio-noreverse hilbert zorder
 ///                                       (default random)
-///   locate    walk|conflict-graph...    (default walk)
+///   locate    walk|conflict-graph|conflict-graph-all...   (default walk)
 ///   storage   array|hash...             (default array)
 ///   brio-ratio R                        (default 0.5) fraction carried into earlier rounds,
 ///                                       in [0, 1): CGAL's and geogram's 1/8 is 0.125
