@@ -54,7 +54,16 @@ std::vector<std::string> triangulation_columns() {
                               std::string(predicates::stage_name(static_cast<predicates::Stage>(s))));
         }
     }
-    for (const char* c : {"storage_bytes", "peak_rss_bytes", "valid", "hash"}) {
+    // Theorem 5.4's conflicts (Σj over created solid tetrahedra, ghosts apart), "-" when the run
+    // did not count them.
+    for (const char* c : {"conflicts",
+                          "conflicts_per_point",
+                          "ghost_conflicts",
+                          "live_conflicts_max",
+                          "storage_bytes",
+                          "peak_rss_bytes",
+                          "valid",
+                          "hash"}) {
         columns.emplace_back(c);
     }
     return columns;
@@ -71,7 +80,10 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
     options.locate = core::parse_locate_kind(run.locate);
     options.storage = core::parse_storage_kind(run.storage);
     options.count = true;
+    options.count_conflicts = suite.count_conflicts;
     options.seed = run.seed;
+    const bool conflicts_counted =
+        suite.count_conflicts || options.locate == core::LocateKind::kFullConflictGraph;
     const bool peak_known = reset_peak_rss();
     const auto start = Clock::now();
     const core::Triangulation result = core::triangulate(points, order.sequence, options);
@@ -108,6 +120,15 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
     char hash[20];
     std::snprintf(hash, sizeof hash, "%016llx",
                   static_cast<unsigned long long>(detail::canonical_hash(result.tets)));
+    const auto counted = [&](std::uint64_t value) {
+        return conflicts_counted ? number(value) : std::string("-");
+    };
+    out.values.push_back(counted(c.conflicts_created));
+    out.values.push_back(conflicts_counted
+                             ? number(static_cast<double>(c.conflicts_created) / count)
+                             : std::string("-"));
+    out.values.push_back(counted(c.ghost_conflicts_created));
+    out.values.push_back(counted(c.live_conflicts_max));
     out.values.push_back(number(std::uint64_t{result.storage_bytes}));
     out.values.push_back(number(peak));
     out.values.push_back(valid);

@@ -218,6 +218,12 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
             suite.locators = reader.names(words, core::parse_locate_kind);
         } else if (key == "storage") {
             suite.storages = reader.names(words, core::parse_storage_kind);
+        } else if (key == "count-conflicts") {
+            const std::string& w = single();
+            if (w != "yes" && w != "no") {
+                reader.fail("count-conflicts takes yes or no, not '" + w + "'");
+            }
+            suite.count_conflicts = w == "yes";
         } else if (key == "brio-ratio") {
             const std::string& w = single();
             char* stop = nullptr;

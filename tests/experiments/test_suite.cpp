@@ -19,6 +19,8 @@ seeds.quick 1..3
 seeds.full  1
 order     random brio-noreverse
 locate    walk conflict-graph
+count-conflicts yes
+brio-ratio 0.125
 )";
 
 TEST(Suite, ParsesEveryKey) {
@@ -30,6 +32,8 @@ TEST(Suite, ParsesEveryKey) {
     EXPECT_EQ(suite.full.sizes, (std::vector<std::uint64_t>{1000}));
     EXPECT_EQ(suite.storages, (std::vector<std::string>{"array"}));
     EXPECT_FALSE(suite.validate);
+    EXPECT_TRUE(suite.count_conflicts);
+    EXPECT_EQ(suite.brio_ratio, 0.125);
     // 2 dists x 2 sizes x 3 seeds x 2 orders x 2 locators.
     EXPECT_EQ(enumerate_runs(suite, suite.quick).size(), 48u);
 }
@@ -55,6 +59,11 @@ TEST(Suite, MalformedLinesAreNamedByFileAndLine) {
     EXPECT_NE(error_of(head + "dist cube nowhere\n" + rest).find("bad.suite:3: unknown distribution"),
               std::string::npos);
     EXPECT_NE(error_of(head + "dist cube\norder sideways\n" + rest).find("bad.suite:4:"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "dist cube\ncount-conflicts maybe\n" + rest)
+                  .find("bad.suite:4: count-conflicts takes yes or no"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "dist cube\nbrio-ratio 1\n" + rest).find("bad.suite:4: brio-ratio"),
               std::string::npos);
     EXPECT_NE(error_of(head + "dist cube\nkind jtets\n" + rest).find("bad.suite:4: key 'kind' given twice"),
               std::string::npos);

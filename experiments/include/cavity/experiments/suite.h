@@ -21,6 +21,7 @@
 ///                                       (default random)
 ///   locate    walk|conflict-graph|conflict-graph-all...   (default walk)
 ///   storage   array|hash...             (default array)
+///   count-conflicts yes|no              runs: count every tetrahedron's conflicts (default no)
 ///   brio-ratio R                        (default 0.5) fraction carried into earlier rounds,
 ///                                       in [0, 1): CGAL's and geogram's 1/8 is 0.125
 ///   orders.quick R  orders.full R       creation: insertion orders per point set (default 100)
@@ -54,6 +55,9 @@ struct Suite {
     std::vector<std::string> locators{"walk"};
     std::vector<std::string> storages{"array"};
     double brio_ratio = 0.5;
+    /// `count-conflicts yes`: every run counts Theorem 5.4's conflicts with the kd-tree counter
+    /// (the full conflict graph counts them anyway); its time is then in time_s.
+    bool count_conflicts = false;
     bool validate = false;
     std::uint64_t validate_max = UINT64_MAX;  ///< `validate N`: larger runs are not checked
 
