@@ -2,6 +2,7 @@
 # Regenerates the quick tier of every experiment suite, the plots and the summary tables:
 #   results/experiments/quick/*.csv, *.j.csv, *.meta.json   (cavity experiment)
 #   results/experiments/plots/*.png, *.svg, summary.md       (results/plot.py)
+#   the generated sections of results/README.md              (results/report.py)
 # The report, results/README.md, embeds those plots. Measured on the 2-core project machine:
 # see results/README.md for the time this takes. Usage: scripts/experiments-quick.sh [BUILD_DIR]
 set -euo pipefail
@@ -20,4 +21,5 @@ for suite in jtets creation scaling quadratic walk adversarial degenerate peers 
 done
 # Debian's matplotlib: /usr/bin/python3, not whichever python3 comes first on PATH.
 /usr/bin/python3 results/plot.py "$out" results/experiments/plots
+/usr/bin/python3 results/report.py "$out" results/README.md
 echo "quick tier: $(( $(date +%s) - start )) s in all; report: results/README.md"

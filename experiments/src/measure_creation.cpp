@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "cavity/core/generate.h"
 #include "cavity/core/insertion_order.h"
@@ -14,8 +15,20 @@ namespace cavity::experiments::measure {
 using detail::number;
 
 std::vector<std::string> creation_columns() {
-    return {"points", "orders", "time_s", "created_mean", "created_solid_total", "rule_violations",
-            "sum_j_mean"};
+    // Per order: tetrahedra created and Σj, their standard deviations over the orders, and the
+    // exact expectations under a uniform order (Proposition 5.2: Σ_j f_j / C(j+4, 4) and
+    // Σ_j j f_j / C(j+4, 4)), so that each identity is tested with its own standard error.
+    return {"points",
+            "orders",
+            "time_s",
+            "created_mean",
+            "created_solid_total",
+            "rule_violations",
+            "sum_j_mean",
+            "created_sd",
+            "sum_j_sd",
+            "created_exact_uniform",
+            "sum_j_exact_uniform"};
 }
 
 std::vector<std::string> creation_j_columns() {
@@ -30,21 +43,38 @@ RunOutput creation(const Suite& suite, const TierSettings& tier, const RunSpec& 
     std::uint64_t violations = 0;
     std::uint64_t created_total = 0;
     std::uint64_t sum_j = 0;
+    double created_squares = 0;
+    double sum_j_squares = 0;
     for (std::uint64_t r = 0; r < tier.orders; ++r) {
         // Order seeds differ per repetition and from the point seed.
         const core::InsertionOrder order = core::make_insertion_order(
             points.points, detail::order_options(run.order, suite.brio_ratio, run.seed * 1000003 + r));
         const CreationAudit audit = audit_creation(points, order.sequence);
         violations += audit.violations;
+        std::uint64_t created_here = 0;
+        std::uint64_t sum_j_here = 0;
         for (const auto& [j, number_created] : audit.created_by_j) {
             created[j] += number_created;
-            created_total += number_created;
-            sum_j += j * number_created;
+            created_here += number_created;
+            sum_j_here += j * number_created;
         }
+        created_total += created_here;
+        sum_j += sum_j_here;
+        created_squares += static_cast<double>(created_here) * static_cast<double>(created_here);
+        sum_j_squares += static_cast<double>(sum_j_here) * static_cast<double>(sum_j_here);
     }
     const double time_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const auto orders = static_cast<double>(tier.orders);
+    const auto sd = [orders](double total, double squares) {
+        if (orders < 2) {
+            return 0.0;
+        }
+        const double mean = total / orders;
+        return std::sqrt(std::max(0.0, (squares - orders * mean * mean) / (orders - 1)));
+    };
+    double created_exact = 0;
+    double sum_j_exact = 0;
     RunOutput out;
     for (std::size_t j = 0; j < counts.f.size(); ++j) {
         if (counts.f[j] == 0) {
@@ -53,12 +83,22 @@ RunOutput creation(const Suite& suite, const TierSettings& tier, const RunSpec& 
         const double q_hat = static_cast<double>(created[j]) / (orders * static_cast<double>(counts.f[j]));
         const double jj = static_cast<double>(j);
         const double q_uniform = 24.0 / ((jj + 1) * (jj + 2) * (jj + 3) * (jj + 4));
+        created_exact += static_cast<double>(counts.f[j]) * q_uniform;
+        sum_j_exact += jj * static_cast<double>(counts.f[j]) * q_uniform;
         out.j_rows.push_back({number(std::uint64_t{j}), number(counts.f[j]), number(created[j]),
                               number(q_hat), number(q_uniform), number(q_hat * jj * jj * jj * jj)});
     }
-    out.values = {number(std::uint64_t{points.size()}), number(tier.orders), number(time_s),
-                  number(static_cast<double>(created_total) / orders), number(created_total),
-                  number(violations), number(static_cast<double>(sum_j) / orders)};
+    out.values = {number(std::uint64_t{points.size()}),
+                  number(tier.orders),
+                  number(time_s),
+                  number(static_cast<double>(created_total) / orders),
+                  number(created_total),
+                  number(violations),
+                  number(static_cast<double>(sum_j) / orders),
+                  number(sd(static_cast<double>(created_total), created_squares)),
+                  number(sd(static_cast<double>(sum_j), sum_j_squares)),
+                  number(created_exact),
+                  number(sum_j_exact)};
     return out;
 }
 

@@ -96,6 +96,11 @@ std::string metadata_json(const Suite& suite,
     field("sizes", list(settings.sizes), false);
     field("seeds", list(settings.seeds), false);
     field("order_seed_offset", "1000", false);
+    // BRIO's ratio, in the literature's convention (the fraction carried to earlier rounds).
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.17g", suite.brio_ratio);
+    field("brio_ratio", ratio, false);
+    field("count_conflicts", suite.count_conflicts ? "true" : "false", false);
     if (suite.kind == SuiteKind::kDeletion) {
         field("deletions", std::to_string(settings.deletions), false);
         field("deletion_seed_offset", "2000", false);

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# results/report.py rewrites only its marked sections, from the tables it is given: a creation run
+# whose Σj sits 3 standard errors from the exact value must be reported as a failed identity, a
+# scaling table's Σj slope must be the one computed from its rows, and a README without the
+# markers is an error.
+set -u
+report="$1"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+failures=0
+cd "$work"
+mkdir in
+cat > in/creation.csv <<'CSV'
+dist,n,order,locate,storage,seed,points,orders,time_s,created_mean,created_solid_total,rule_violations,sum_j_mean,created_sd,sum_j_sd,created_exact_uniform,sum_j_exact_uniform
+cube,100,random,-,-,1,100,100,1,1561.5,156150,0,5587.5,50,333.3333,1561.5,5487.5
+CSV
+cat > in/creation.j.csv <<'CSV'
+dist,n,order,locate,storage,seed,j,f_j,created,q_hat,q_uniform,j4_q_hat
+cube,100,random,-,-,1,1,1000,20000,0.2,0.2,0.2
+CSV
+{
+  echo "dist,n,order,locate,storage,seed,points,created_per_point,deleted_per_point,tets,conflicts,conflicts_per_point,ghost_conflicts,live_conflicts_max"
+  echo "cube,1000,random,conflict-graph-all,array,1,1000,24,17,6500,200000,200,1000,15000"
+  echo "cube,10000,random,conflict-graph-all,array,1,10000,26,19,67000,4000000,400,5000,190000"
+} > in/scaling.csv
+cat > README.md <<'MD'
+# kept
+<!-- BEGIN GENERATED creation (results/report.py; do not edit) -->
+old text
+<!-- END GENERATED creation -->
+between
+<!-- BEGIN GENERATED scaling (results/report.py; do not edit) -->
+<!-- END GENERATED scaling -->
+MD
+/usr/bin/python3 "$report" in README.md || fail "report.py failed"
+grep -q "^# kept$" README.md && grep -q "^between$" README.md || fail "text outside the markers changed"
+grep -q "old text" README.md && fail "the old section was kept"
+# (5587.5 - 5487.5) / (333.3333 / sqrt(100)) = +3.00
+grep -q "| cube seed 1 | Σj | 5 587.5 ± 65.3 | 5 487.5 | +3.00 |" README.md || fail "Σj row: $(grep 'Σj |' README.md)"
+grep -q "differ from the exact expectations beyond their 95 % intervals in 1 of 2" README.md ||
+  fail "a 3σ deviation is not reported as one"
+# (400 - 200) / ln 10 = 86.9 per unit of ln n
+grep -q "| cube | random | 200.0 \[200.0–200.0\] | 400.0 \[400.0–400.0\] | 86.9 |" README.md ||
+  fail "scaling row: $(grep '| cube | random' README.md)"
+printf '# no markers\n' > plain.md
+/usr/bin/python3 "$report" in plain.md 2>/dev/null && fail "a README without markers was accepted"
+if [ "$failures" -ne 0 ]; then
+  echo "$failures failure(s)"
+  exit 1
+fi
+echo "report.py: all cases passed"
