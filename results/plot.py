@@ -13,6 +13,8 @@ from collections import defaultdict
 
 import matplotlib
 
+from report import Z95, brio_estimates  # the estimator the report's text uses
+
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
@@ -589,6 +591,46 @@ def plot_cdt(inp, out, md):
     md.append("")
 
 
+def plot_brio(inp, out, md):
+    est = brio_estimates(inp)
+    if not est:
+        return
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.4))
+    md.append("## brio (Proposition 5.3 at large n)\n")
+    md.append("| ratio | j | q̂_j | 95 % half-width | 1/C(j+4,4) | j^4 q̂_j |")
+    md.append("|---|---|---|---|---|---|")
+    for k, (key, e) in enumerate(sorted(est.items(), key=lambda kv: -kv[1]["ratio"])):
+        rows = [r for r in e["rows"] if r[0] <= 64]
+        j = np.array([r[0] for r in rows], float)
+        q = np.array([r[1] for r in rows])
+        se = np.array([r[2] for r in rows])
+        q0 = np.array([r[3] for r in rows])
+        style = dict(color=COLOURS[2 * k % len(COLOURS)], ls=LINE_STYLES[k % len(LINE_STYLES)],
+                     marker="os^v"[k % 4], ms=3, capsize=2)
+        label = f"BRIO ratio {e['ratio']:g}"
+        axes[0].errorbar(j, j**4 * q, yerr=Z95 * j**4 * se, label=label, **style)
+        axes[1].errorbar(j, q / q0 - 1, yerr=Z95 * se / q0, label=label, **style)
+        for jj, qq, ss, qu in rows:
+            if jj in (1, 2, 4, 8, 16, 32, 64):
+                md.append(f"| {e['ratio']:g} | {jj} | {qq:.4e} | {Z95 * ss:.1e} | {qu:.4e} | "
+                          f"{jj**4 * qq:.2f} |")
+    jj = np.arange(1, 65)
+    axes[0].plot(jj, 24 * jj**4 / ((jj + 1) * (jj + 2) * (jj + 3) * (jj + 4)), "k-", lw=1,
+                 label=r"uniform: $j^4/\binom{j+4}{4}$")
+    axes[0].axhline(24, color="g", ls="--", lw=1, label="Prop. 5.2 bound 4! = 24")
+    axes[0].axhline(385, color="r", ls="--", lw=1, label="Prop. 5.3 bound 385")
+    axes[0].set(xscale="log", yscale="log", xlabel="j", ylabel=r"$j^4 \hat q_j$",
+                title="BRIO: creation probability of a j-tetrahedron (95 % intervals)")
+    axes[1].axhline(0, color="k", lw=1)
+    axes[1].set(xscale="log", xlabel="j", ylabel=r"$\hat q_j / q_j^{\rm uniform} - 1$",
+                title="BRIO's departure from the uniform order")
+    for ax in axes:
+        ax.legend(fontsize=7)
+        ax.grid(True, which="both", alpha=0.3)
+    save(fig, out, "brio")
+    md.append("")
+
+
 def main():
     inp, out = sys.argv[1], sys.argv[2]
     os.makedirs(out, exist_ok=True)
@@ -596,6 +638,7 @@ def main():
           f"Input tables: `{inp}`.\n"]
     plot_jtets(inp, out, md)
     plot_creation(inp, out, md)
+    plot_brio(inp, out, md)
     plot_scaling(inp, out, md)
     plot_loglog_suite(inp, out, md, "quadratic", "created", "quadratic families: tetrahedra created",
                       "tetrahedra created", False, [(2, "slope 2")])

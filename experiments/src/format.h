@@ -2,8 +2,10 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
+#include "cavity/core/error.h"
 #include "cavity/core/insertion_order.h"
 
 /// Small helpers shared by the measurement files (private to the experiments layer).
@@ -19,13 +21,25 @@ inline std::string number(double value) {
 inline std::string number(std::uint64_t value) { return std::to_string(value); }
 
 /// The insertion-order options of a suite's order name ("brio-noreverse" is BRIO without the
-/// reversal of alternate rounds). Order seeds are offset from point seeds so that the two random
-/// streams differ.
+/// reversal of alternate rounds; "brio:R" is BRIO with ratio R in [0, 1), overriding the suite's
+/// brio-ratio). Order seeds are offset from point seeds so that the two random streams differ.
+/// \throws core::Error for an unknown name or a ratio that is not a number in [0, 1).
 inline core::OrderOptions order_options(const std::string& name, double brio_ratio, std::uint64_t seed) {
     core::OrderOptions options;
-    options.kind = core::parse_order_kind(name == "brio-noreverse" ? "brio" : name);
-    options.reverse_alternate_rounds = name != "brio-noreverse";
     options.brio_ratio = brio_ratio;
+    std::string kind = name == "brio-noreverse" ? "brio" : name;
+    if (name.rfind("brio:", 0) == 0) {
+        const std::string ratio = name.substr(5);
+        char* stop = nullptr;
+        options.brio_ratio = std::strtod(ratio.c_str(), &stop);
+        if (ratio.empty() || stop != ratio.c_str() + ratio.size() ||
+            !(options.brio_ratio >= 0 && options.brio_ratio < 1)) {
+            throw core::Error("order '" + name + "': the BRIO ratio must be a number in [0, 1)");
+        }
+        kind = "brio";
+    }
+    options.kind = core::parse_order_kind(kind);
+    options.reverse_alternate_rounds = name != "brio-noreverse";
     options.seed = seed + 1000;
     return options;
 }

@@ -52,6 +52,8 @@ double run_cost(const Suite& suite, const TierSettings& tier, const RunSpec& run
     switch (suite.kind) {
         case SuiteKind::kJTets: return std::pow(n, 4) * 1e-3;
         case SuiteKind::kCreation: return n * n * static_cast<double>(tier.orders);
+        case SuiteKind::kHj:
+            return n * std::log(n + 1) * static_cast<double>(tier.orders);
         case SuiteKind::kDegenerate: return n * 10;
         case SuiteKind::kPeers: return n * 3;
         case SuiteKind::kGiftWrap: return n * n * 0.1;  // O(nh) apex tests
@@ -66,6 +68,8 @@ std::vector<std::string> metric_columns(SuiteKind kind) {
     switch (kind) {
         case SuiteKind::kJTets: return measure::jtets_columns();
         case SuiteKind::kCreation: return measure::creation_columns();
+        case SuiteKind::kHj:
+            return measure::hj_columns();
         case SuiteKind::kPeers: return measure::peers_columns();
         case SuiteKind::kGiftWrap: return measure::giftwrap_columns();
         case SuiteKind::kDeletion: return measure::deletion_columns();
@@ -80,6 +84,8 @@ std::vector<std::string> j_columns(SuiteKind kind) {
     switch (kind) {
         case SuiteKind::kJTets: return measure::jtets_j_columns();
         case SuiteKind::kCreation: return measure::creation_j_columns();
+        case SuiteKind::kHj:
+            return measure::hj_j_columns();
         case SuiteKind::kDeletion: return measure::deletion_j_columns();
         case SuiteKind::kCdt: return measure::cdt_j_columns();
         case SuiteKind::kGiftWrap:
@@ -94,6 +100,8 @@ RunOutput execute_run(const Suite& suite, const TierSettings& tier, const RunSpe
     switch (suite.kind) {
         case SuiteKind::kJTets: return measure::jtets(run);
         case SuiteKind::kCreation: return measure::creation(suite, tier, run);
+        case SuiteKind::kHj:
+            return measure::hj(suite, tier, run);
         case SuiteKind::kPeers: return measure::peers(suite, run);
         case SuiteKind::kGiftWrap: return measure::giftwrap(suite, run);
         case SuiteKind::kDeletion: return measure::deletion(suite, tier, run);

@@ -12,6 +12,7 @@
 #include "cavity/core/insertion_order.h"
 #include "cavity/core/triangulate.h"
 #include "cavity/experiments/plc_families.h"
+#include "format.h"
 
 namespace cavity::experiments {
 
@@ -95,17 +96,22 @@ private:
 };
 
 SuiteKind parse_kind(const LineReader& reader, const std::string& word) {
-    constexpr SuiteKind kKinds[] = {SuiteKind::kRuns,     SuiteKind::kJTets,
-                                    SuiteKind::kCreation, SuiteKind::kDegenerate,
-                                    SuiteKind::kPeers,    SuiteKind::kGiftWrap,
-                                    SuiteKind::kDeletion, SuiteKind::kCdt};
+    constexpr SuiteKind kKinds[] = {SuiteKind::kRuns,
+                                    SuiteKind::kJTets,
+                                    SuiteKind::kCreation,
+                                    SuiteKind::kDegenerate,
+                                    SuiteKind::kPeers,
+                                    SuiteKind::kGiftWrap,
+                                    SuiteKind::kDeletion,
+                                    SuiteKind::kCdt,
+                                    SuiteKind::kHj};
     for (SuiteKind kind : kKinds) {
         if (word == suite_kind_name(kind)) {
             return kind;
         }
     }
     reader.fail("unknown kind '" + word +
-                "' (runs, jtets, creation, degenerate, peers, giftwrap, deletion or cdt)");
+                "' (runs, jtets, creation, degenerate, peers, giftwrap, deletion, cdt or hj)");
 }
 
 void check_distribution(const std::string& name) {
@@ -127,9 +133,7 @@ void check_plc_family(const std::string& name) {
 }
 
 void check_order(const std::string& name) {
-    if (name != "brio-noreverse") {
-        core::parse_order_kind(name);
-    }
+    detail::order_options(name, 0.5, 0);  // throws Error for an unknown name or a bad ratio
 }
 
 }  // namespace
@@ -139,6 +143,8 @@ std::string_view suite_kind_name(SuiteKind kind) {
         case SuiteKind::kRuns: return "runs";
         case SuiteKind::kJTets: return "jtets";
         case SuiteKind::kCreation: return "creation";
+        case SuiteKind::kHj:
+            return "hj";
         case SuiteKind::kDegenerate: return "degenerate";
         case SuiteKind::kPeers: return "peers";
         case SuiteKind::kGiftWrap: return "giftwrap";

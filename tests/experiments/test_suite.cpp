@@ -1,6 +1,7 @@
-#include <gtest/gtest.h>
-
+#include <algorithm>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "cavity/core/error.h"
 #include "cavity/experiments/run.h"
@@ -81,6 +82,48 @@ TEST(Suite, ShippedSuitesParse) {
         const std::string path = std::string(CAVITY_SUITES_DIR) + "/" + name + ".suite";
         EXPECT_NO_THROW(read_suite(path)) << path;
     }
+}
+
+// The hj kind: per-j means of created tetrahedra that add up to the run's own totals, BRIO ratios
+// named in the order ("brio:R"), and bad ratios refused by name.
+TEST(Suite, HjRunsAddUpAndNameTheirRatio) {
+    const Suite suite = parse_suite(R"(question q
+kind hj
+dist cube
+n.quick 80
+n.full 80
+seeds.quick 1
+seeds.full 1
+order random brio:0.125
+orders.quick 12
+)",
+                                    "hj.suite",
+                                    "hj");
+    const auto runs = enumerate_runs(suite, suite.quick);
+    ASSERT_EQ(runs.size(), 2u);
+    const auto columns = metric_columns(SuiteKind::kHj);
+    const auto column = [&](const RunOutput& out, const std::string& name) {
+        const auto at = std::find(columns.begin(), columns.end(), name) - columns.begin();
+        return std::stod(out.values.at(static_cast<std::size_t>(at)));
+    };
+    for (const RunSpec& run : runs) {
+        const RunOutput out = execute_run(suite, suite.quick, run);
+        double created = 0;
+        double sum_j = 0;
+        for (const auto& row : out.j_rows) {
+            created += std::stod(row[1]);
+            sum_j += std::stod(row[0]) * std::stod(row[1]);
+        }
+        EXPECT_NEAR(created, column(out, "created_mean"), 1e-3 * created) << run.order;
+        EXPECT_NEAR(sum_j, column(out, "sum_j_mean"), 1e-3 * sum_j) << run.order;
+        if (run.order == "brio:0.125") {
+            EXPECT_EQ(column(out, "brio_ratio"), 0.125);
+        }
+    }
+    EXPECT_NE(error_of("question q\nkind hj\ndist cube\norder brio:1.5\nn.quick 10\nn.full 10\n"
+                       "seeds.quick 1\nseeds.full 1\n")
+                  .find("bad.suite:4: order 'brio:1.5'"),
+              std::string::npos);
 }
 
 }  // namespace

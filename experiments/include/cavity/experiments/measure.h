@@ -21,6 +21,14 @@ RunOutput creation(const Suite& suite, const TierSettings& tier, const RunSpec& 
 std::vector<std::string> creation_columns();
 std::vector<std::string> creation_j_columns();
 
+/// Many insertion orders of one point set, too large for the pencil sweep: the created
+/// j-tetrahedra of each order counted exactly (ConflictCountingObserver), their mean per order by
+/// j (h_j), and Σj. Under a uniform order E[h_j] = f_j / C(j+4, 4), so a BRIO's q_j is estimated
+/// as its mean h_j over the uniform order's, times 1/C(j+4, 4) (Proposition 5.3 at large n).
+RunOutput hj(const Suite& suite, const TierSettings& tier, const RunSpec& run);
+std::vector<std::string> hj_columns();
+std::vector<std::string> hj_j_columns();
+
 /// cavity against its peers on the same points, each engine in a child process of its own: CPU
 /// seconds, tetrahedra and peak memory of cavity (order + triangulation), CGAL's
 /// Delaunay_triangulation_3 (when built with CGAL) and TetGen (when `tetgen` is on PATH), and

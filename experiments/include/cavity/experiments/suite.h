@@ -12,7 +12,7 @@
 /// Suite files are line based: `key value value ...`, `#` starts a comment, blank lines are
 /// ignored. Keys (each at most once):
 ///   question  TEXT                      what the suite checks (required)
-///   kind      runs|jtets|creation|degenerate|peers|giftwrap|deletion|cdt   (required)
+///   kind      runs|jtets|creation|degenerate|peers|giftwrap|deletion|cdt|hj   (required)
 ///   dist      NAME...                   generate_points distributions; for cdt, PLC families
 ///                                       (plc_families.h) (required)
 ///   n.quick   N...   n.full N...        sizes per tier (required)
@@ -24,7 +24,8 @@
 ///   count-conflicts yes|no              runs: count every tetrahedron's conflicts (default no)
 ///   brio-ratio R                        (default 0.5) fraction carried into earlier rounds,
 ///                                       in [0, 1): CGAL's and geogram's 1/8 is 0.125
-///   orders.quick R  orders.full R       creation: insertion orders per point set (default 100)
+///   orders.quick R  orders.full R       creation, hj: insertion orders per point set (default 100)
+///   (order names: brio:R is BRIO with ratio R, e.g. brio:0.125, whatever brio-ratio says)
 ///   deletions.quick K deletions.full K  deletion: vertices deleted per run (default 100; at
 ///                                       most half the points)
 ///   validate  yes|no|N                  check every output exactly (default: yes for degenerate
@@ -34,7 +35,17 @@
 /// Anything else is an Error naming the file and the line.
 namespace cavity::experiments {
 
-enum class SuiteKind { kRuns, kJTets, kCreation, kDegenerate, kPeers, kGiftWrap, kDeletion, kCdt };
+enum class SuiteKind {
+    kRuns,
+    kJTets,
+    kCreation,
+    kDegenerate,
+    kPeers,
+    kGiftWrap,
+    kDeletion,
+    kCdt,
+    kHj
+};
 
 std::string_view suite_kind_name(SuiteKind kind);
 
