@@ -13,7 +13,7 @@ from collections import defaultdict
 
 import matplotlib
 
-from report import Z95, brio_estimates  # the estimator the report's text uses
+from report import Z95, brio_estimates, walk_rounds  # the estimators the report's text uses
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -268,6 +268,34 @@ def plot_loglog_suite(inp, out, md, suite, key, title, ylabel, per_point, ref):
     ax.legend(fontsize=6)
     ax.grid(True, which="both", alpha=0.3)
     save(fig, out, suite)
+    md.append("")
+
+
+def plot_walk_rounds(inp, out, md):
+    rows = read(os.path.join(inp, "walk.csv"))
+    if rows is None:
+        return
+    rounds = walk_rounds(rows)
+    if not rounds:
+        return
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    md.append("## walk: the first walk of each BRIO round\n")
+    md.append("| order | n | first walk mean | first walk max | other insertions |")
+    md.append("|---|---|---|---|---|")
+    for k, (order, by_n) in enumerate(sorted(rounds.items())):
+        ns = sorted(by_n)
+        ax.loglog(ns, [by_n[n][0] for n in ns], color=COLOURS[2 * k], ls=LINE_STYLES[k], marker="o",
+                  ms=3, label=f"{order}: first walk of a round (mean)")
+        ax.loglog(ns, [by_n[n][1] for n in ns], color=COLOURS[2 * k + 1], ls=LINE_STYLES[k],
+                  marker="^", ms=3, label=f"{order}: first walk of a round (largest)")
+        for n in ns:
+            md.append(f"| {order} | {n} | {by_n[n][0]:.2f} | {by_n[n][1]:.0f} | {by_n[n][2]:.2f} |")
+    n = np.array([min(min(v) for v in rounds.values()), max(max(v) for v in rounds.values())], float)
+    ax.loglog(n, 10 * (n / n[0]) ** (1 / 3), "k:", lw=1, label="slope 1/3 (a walk across the domain)")
+    ax.set(xlabel="n", ylabel="walk steps", title="§5.5: the walk that starts each BRIO round")
+    ax.legend(fontsize=7)
+    ax.grid(True, which="both", alpha=0.3)
+    save(fig, out, "walk_rounds")
     md.append("")
 
 
@@ -644,6 +672,7 @@ def main():
                       "tetrahedra created", False, [(2, "slope 2")])
     plot_loglog_suite(inp, out, md, "walk", "walk_steps", "walk steps per insertion", "walk steps / n",
                       True, [(1 / 3, "slope 1/3"), (0, "slope 0")])
+    plot_walk_rounds(inp, out, md)
     plot_loglog_suite(inp, out, md, "adversarial", "created", "grid: tetrahedra created per point",
                       "created / n", True, [(0, "slope 0 (linear total)"), (0.5, "slope 1/2 (n^1.5 total)")])
     summarize_degenerate(inp, md)

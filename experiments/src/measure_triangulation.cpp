@@ -3,12 +3,13 @@
 #include <fstream>
 #include <string>
 
+#include "canonical.h"
 #include "cavity/core/error.h"
 #include "cavity/core/generate.h"
 #include "cavity/core/triangulate.h"
+#include "cavity/core/triangulate_observed.h"
 #include "cavity/core/validate.h"
 #include "cavity/experiments/measure.h"
-#include "canonical.h"
 #include "format.h"
 
 namespace cavity::experiments::measure {
@@ -39,6 +40,58 @@ std::uint64_t peak_rss_bytes() {
 
 constexpr const char* kKindNames[] = {"orient3d", "insphere", "orient4d", "ghost"};
 
+/// Counts like the counting engine and keeps each insertion's walk steps, by input index, for
+/// the per-round trace of §5.5's reversal claim.
+struct WalkTrace : core::CountingObserver {
+    explicit WalkTrace(std::size_t n) : steps(n, 0) {}
+
+    void on_insertion(const core::InsertionRecord& record) {
+        steps[record.vertex] = record.walk_steps;
+    }
+
+    std::vector<std::uint32_t> steps;
+};
+
+/// §5.5: a BRIO round sorted along the curve starts where the previous one ended when alternate
+/// rounds are reversed, so its first walk is short. Over the rounds after the first non-empty one:
+/// the mean and the largest walk of each round's first insertion, and the mean walk of the rest.
+struct RoundWalks {
+    double first_mean = 0;
+    double first_max = 0;
+    double rest_mean = 0;
+};
+
+RoundWalks round_walks(const core::InsertionOrder& order, const std::vector<std::uint32_t>& steps) {
+    RoundWalks out;
+    const auto& begin = order.round_begin;
+    const std::size_t n = order.sequence.size();
+    double firsts = 0;
+    double rest = 0;
+    std::size_t rounds = 0;
+    std::size_t others = 0;
+    bool earlier = false;  // a non-empty round came before: the first walk crosses a boundary
+    for (std::size_t r = 0; r < begin.size(); ++r) {
+        const std::size_t end = r + 1 < begin.size() ? begin[r + 1] : n;
+        if (begin[r] == end) {
+            continue;
+        }
+        if (earlier) {
+            const double first = steps[order.sequence[begin[r]]];
+            firsts += first;
+            out.first_max = std::max(out.first_max, first);
+            ++rounds;
+            for (std::size_t k = begin[r] + 1; k < end; ++k) {
+                rest += steps[order.sequence[k]];
+                ++others;
+            }
+        }
+        earlier = true;
+    }
+    out.first_mean = rounds > 0 ? firsts / static_cast<double>(rounds) : 0;
+    out.rest_mean = others > 0 ? rest / static_cast<double>(others) : 0;
+    return out;
+}
+
 }  // namespace
 
 std::vector<std::string> triangulation_columns() {
@@ -55,11 +108,15 @@ std::vector<std::string> triangulation_columns() {
         }
     }
     // Theorem 5.4's conflicts (Σj over created solid tetrahedra, ghosts apart), "-" when the run
-    // did not count them.
+    // did not count them. Then, for BRIO only ("-" otherwise): the walk of each round's first
+    // insertion, mean and largest, against the mean walk of the other insertions of those rounds.
     for (const char* c : {"conflicts",
                           "conflicts_per_point",
                           "ghost_conflicts",
                           "live_conflicts_max",
+                          "round_first_walk_mean",
+                          "round_first_walk_max",
+                          "round_rest_walk_mean",
                           "storage_bytes",
                           "peak_rss_bytes",
                           "valid",
@@ -86,7 +143,11 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
         suite.count_conflicts || options.locate == core::LocateKind::kFullConflictGraph;
     const bool peak_known = reset_peak_rss();
     const auto start = Clock::now();
-    const core::Triangulation result = core::triangulate(points, order.sequence, options);
+    // The trace costs one store per insertion; runs that count conflicts use their own observer.
+    WalkTrace trace(points.size());
+    const core::Triangulation result =
+        suite.count_conflicts ? core::triangulate(points, order.sequence, options)
+                              : core::triangulate_observed(points, order.sequence, options, trace);
     const double time_s = std::chrono::duration<double>(Clock::now() - start).count();
     const std::uint64_t peak = peak_known ? peak_rss_bytes() : 0;
     std::string valid = "-";
@@ -129,6 +190,11 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
                              : std::string("-"));
     out.values.push_back(counted(c.ghost_conflicts_created));
     out.values.push_back(counted(c.live_conflicts_max));
+    const bool traced = !order.round_begin.empty() && !suite.count_conflicts;
+    const RoundWalks walks = traced ? round_walks(order, trace.steps) : RoundWalks{};
+    for (const double v : {walks.first_mean, walks.first_max, walks.rest_mean}) {
+        out.values.push_back(traced ? number(v) : std::string("-"));
+    }
     out.values.push_back(number(std::uint64_t{result.storage_bytes}));
     out.values.push_back(number(peak));
     out.values.push_back(valid);
