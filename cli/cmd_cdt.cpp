@@ -4,6 +4,7 @@
 
 #include "cavity/core/atomic_file.h"
 #include "cavity/core/cdt.h"
+#include "cavity/core/cdt_regions.h"
 #include "cavity/core/cdt_vertex_insertion.h"
 #include "cavity/core/error.h"
 #include "cavity/core/mesh_io.h"
@@ -101,7 +102,13 @@ void run_cdt(const CdtArgs& args) {
     core::AtomicFileGroup group;
     core::write_tetgen(group, args.prefix, cdt.plc.points, cdt.tets);
     write_faces(group.add(args.prefix + ".face"), cdt);
-    core::write_vtu(group, args.prefix, cdt.plc.points, cdt.tets);
+    // TetGen's region attributes become the cell data `region` (0: no region).
+    const std::vector<std::int32_t> regions = core::region_markers(cdt.plc, cdt.tets, cdt.faces);
+    core::VtuOptions vtu;
+    if (!cdt.plc.regions.empty()) {
+        vtu.regions = regions;
+    }
+    core::write_vtu(group, args.prefix, cdt.plc.points, cdt.tets, vtu);
     core::write_poly(group.add(args.prefix + ".poly"), cdt.plc);
     group.commit();
     if (args.quiet) {

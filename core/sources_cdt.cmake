@@ -17,6 +17,7 @@ target_sources(cavity_core PRIVATE
   src/polygon_region.cpp
   src/cdt_validate.cpp
   src/cdt.cpp
+  src/cdt_regions.cpp
   src/cdt_vertex_insertion.cpp
   src/write_poly.cpp
 )

@@ -136,6 +136,28 @@ Point3 hole_point(PolyParser& in, const std::vector<std::string_view>& tokens) {
     return {in.number(tokens[1], "x"), in.number(tokens[2], "y"), in.number(tokens[3], "z")};
 }
 
+/// `<index> x y z <attribute> [<volume bound>]`: the attribute becomes the region marker, so it
+/// must be an integer that fits VTK's Int32 cell data; the volume bound (a mesher's) is ignored.
+PlcRegion region_seed(PolyParser& in, const std::vector<std::string_view>& tokens) {
+    if (tokens.size() != 5 && tokens.size() != 6) {
+        in.fail("a region is `<index> x y z <attribute> [<volume bound>]`, found " +
+                std::to_string(tokens.size()) + " fields");
+    }
+    const double attribute = in.number(tokens[4], "region attribute");
+    if (!(attribute >= -2147483648.0 && attribute <= 2147483647.0) ||
+        attribute != static_cast<double>(static_cast<std::int32_t>(attribute))) {
+        in.fail("region attribute '" + std::string(tokens[4]) +
+                "' is not an integer between -2147483648 and 2147483647 (it becomes the cell "
+                "data `region`)");
+    }
+    if (tokens.size() == 6) {
+        in.number(tokens[5], "volume bound");
+    }
+    return {{in.number(tokens[1], "x"), in.number(tokens[2], "y"), in.number(tokens[3], "z")},
+            static_cast<std::int32_t>(attribute),
+            in.line()};
+}
+
 void check_facet(PolyParser& in, const Plc& plc, const PlcFacet& facet) {
     const std::string name = "facet " + std::to_string(facet.number);
     const auto plane = ExactPlane::of_facet(plc, facet);
@@ -283,7 +305,13 @@ Plc read_poly(const std::filesystem::path& file) {
             plc.volume_holes.push_back(hole_point(in, in.next("a volume hole")));
         }
     }
-    // A region part, if any, carries attributes the CDT does not use.
+    if (in.more()) {
+        const auto header = in.next_or_pending("the region header");
+        const std::uint64_t regions = in.bounded_count(header[0], "number of regions");
+        for (std::uint64_t r = 0; r < regions; ++r) {
+            plc.regions.push_back(region_seed(in, in.next("a region")));
+        }
+    }
     return plc;
 }
 

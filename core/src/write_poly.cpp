@@ -70,6 +70,17 @@ void write_poly(AtomicFileGroup::Writer& out, const Plc& plc) {
         text += ' ';
         append_point(text, plc.volume_holes[h]);
     }
+    if (!plc.regions.empty()) {
+        append_uint(text, plc.regions.size());
+        text += '\n';
+        for (std::size_t r = 0; r < plc.regions.size(); ++r) {
+            append_uint(text, r + base);
+            text += ' ';
+            append_point(text, plc.regions[r].point);
+            text.pop_back();  // the marker follows on the same line
+            text += ' ' + std::to_string(plc.regions[r].marker) + '\n';
+        }
+    }
     out.write(text);
 }
 

@@ -60,4 +60,26 @@ with tempfile.TemporaryDirectory() as work:
             quality.Update()
             volumes = quality.GetOutput().GetCellData().GetArray("CellQuality")
             assert min(volumes.GetValue(i) for i in range(grid.GetNumberOfCells())) > 0
-print("meshio reads cavity's .vtu files with positive volumes")
+    # A CDT with TetGen's region list: the .vtu carries each tetrahedron's region marker.
+    poly = ["16 3 0 0"]
+    for i in range(8):
+        poly.append(f"{i} {(i & 1) * 4} {((i >> 1) & 1) * 4} {((i >> 2) & 1) * 4}")
+    for i in range(8):
+        poly.append(f"{i + 8} {1 + (i & 1) * 2} {1 + ((i >> 1) & 1) * 2} {1 + ((i >> 2) & 1) * 2}")
+    squares = [(0, 1, 3, 2), (4, 5, 7, 6), (0, 1, 5, 4), (2, 3, 7, 6), (0, 2, 6, 4), (1, 3, 7, 5)]
+    poly.append("12 1")
+    for offset in (0, 8):
+        for s in squares:
+            poly += ["1 0 1", "4 " + " ".join(str(v + offset) for v in s)]
+    poly += ["0", "2", "0 2 2 2 7", "1 0.5 0.5 0.5 3"]
+    with open("boxes.poly", "w") as f:
+        f.write("\n".join(poly) + "\n")
+    run("cdt", "boxes.poly", "-o", "boxes", "--protect")
+    mesh = meshio.read("boxes.vtu")
+    cells = mesh.cells_dict["tetra"]
+    regions = mesh.cell_data["region"][0]
+    centroids = mesh.points[cells].mean(axis=1)
+    inside = np.all((centroids > 1) & (centroids < 3), axis=1)
+    assert np.array_equal(regions, np.where(inside, 7, 3)), "region markers"
+    assert exact_volume_signs(mesh.points, cells) == {1}
+print("meshio reads cavity's .vtu files with positive volumes and CDT region markers")

@@ -30,6 +30,14 @@ struct PlcFacet {
     std::size_t number = 0;  ///< position in the file's facet list, numbered like the points
 };
 
+/// A region seed of a .poly file (TetGen's region list): the tetrahedra reachable from the one
+/// holding `point` without crossing a polygon carry `marker` (cdt_regions.h).
+struct PlcRegion {
+    Point3 point;
+    std::int32_t marker = 0;
+    std::size_t line = 0;  ///< in the .poly file (0: not from a file)
+};
+
 struct Plc {
     PointSet points;
     std::vector<PlcFacet> facets;
@@ -37,6 +45,7 @@ struct Plc {
     /// Read but not used: the CDT tetrahedralizes the whole convex hull of the points, and
     /// carving volumes out of it is left to the caller.
     std::vector<Point3> volume_holes;
+    std::vector<PlcRegion> regions;
     std::string source;
 };
 
