@@ -1,5 +1,7 @@
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -19,6 +21,28 @@ inline std::string number(double value) {
 }
 
 inline std::string number(std::uint64_t value) { return std::to_string(value); }
+
+/// A sample's sum and sum of squares, for its mean and its standard deviation (n - 1 in the
+/// denominator) over the insertion orders of a run.
+struct Moments {
+    double sum = 0;
+    double squares = 0;
+
+    void add(double x) {
+        sum += x;
+        squares += x * x;
+    }
+
+    double mean(double count) const { return sum / count; }
+
+    double sd(double count) const {
+        if (count < 2) {
+            return 0.0;
+        }
+        const double m = sum / count;
+        return std::sqrt(std::max(0.0, (squares - count * m * m) / (count - 1)));
+    }
+};
 
 /// The insertion-order options of a suite's order name ("brio-noreverse" is BRIO without the
 /// reversal of alternate rounds; "brio:R" is BRIO with ratio R in [0, 1), overriding the suite's

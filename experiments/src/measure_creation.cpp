@@ -43,8 +43,8 @@ RunOutput creation(const Suite& suite, const TierSettings& tier, const RunSpec& 
     std::uint64_t violations = 0;
     std::uint64_t created_total = 0;
     std::uint64_t sum_j = 0;
-    double created_squares = 0;
-    double sum_j_squares = 0;
+    detail::Moments created_per_order;
+    detail::Moments sum_j_per_order;
     for (std::uint64_t r = 0; r < tier.orders; ++r) {
         // Order seeds differ per repetition and from the point seed.
         const core::InsertionOrder order = core::make_insertion_order(
@@ -60,19 +60,12 @@ RunOutput creation(const Suite& suite, const TierSettings& tier, const RunSpec& 
         }
         created_total += created_here;
         sum_j += sum_j_here;
-        created_squares += static_cast<double>(created_here) * static_cast<double>(created_here);
-        sum_j_squares += static_cast<double>(sum_j_here) * static_cast<double>(sum_j_here);
+        created_per_order.add(static_cast<double>(created_here));
+        sum_j_per_order.add(static_cast<double>(sum_j_here));
     }
     const double time_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const auto orders = static_cast<double>(tier.orders);
-    const auto sd = [orders](double total, double squares) {
-        if (orders < 2) {
-            return 0.0;
-        }
-        const double mean = total / orders;
-        return std::sqrt(std::max(0.0, (squares - orders * mean * mean) / (orders - 1)));
-    };
     double created_exact = 0;
     double sum_j_exact = 0;
     RunOutput out;
@@ -95,8 +88,8 @@ RunOutput creation(const Suite& suite, const TierSettings& tier, const RunSpec& 
                   number(created_total),
                   number(violations),
                   number(static_cast<double>(sum_j) / orders),
-                  number(sd(static_cast<double>(created_total), created_squares)),
-                  number(sd(static_cast<double>(sum_j), sum_j_squares)),
+                  number(created_per_order.sd(orders)),
+                  number(sum_j_per_order.sd(orders)),
                   number(created_exact),
                   number(sum_j_exact)};
     return out;
