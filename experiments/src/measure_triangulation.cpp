@@ -9,6 +9,7 @@
 #include "cavity/core/triangulate.h"
 #include "cavity/core/triangulate_observed.h"
 #include "cavity/core/validate.h"
+#include "cavity/experiments/greedy_order.h"
 #include "cavity/experiments/measure.h"
 #include "format.h"
 
@@ -130,8 +131,12 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
     const core::PointSet points = core::generate_points(run.dist, run.n, run.seed);
     using Clock = std::chrono::steady_clock;
     const auto order_start = Clock::now();
-    const core::InsertionOrder order = core::make_insertion_order(
-        points.points, detail::order_options(run.order, suite.brio_ratio, run.seed));
+    // "greedy": Exercise 1's adversary, which needs the triangulation to choose each next point.
+    const core::InsertionOrder order =
+        run.order == "greedy"
+            ? core::InsertionOrder{greedy_order(points), {}}
+            : core::make_insertion_order(
+                  points.points, detail::order_options(run.order, suite.brio_ratio, run.seed));
     const double order_s = std::chrono::duration<double>(Clock::now() - order_start).count();
     core::TriangulateOptions options;
     options.locate = core::parse_locate_kind(run.locate);

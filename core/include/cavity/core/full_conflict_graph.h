@@ -32,7 +32,7 @@ struct ConflictTally {
 /// any new tetrahedron taking the point (the point was in the dead tetrahedron's ball but outside
 /// the cavity), the point is found by the visibility walk instead, from the last solid tetrahedron;
 /// those walks are the engine's walk_steps under this locator. Memory: the live lists, at most
-/// live_max entries of 4 bytes (about 20 n for uniform points), and 12 bytes per point.
+/// live_max entries of 4 bytes (about 20 n for uniform points), and 16 bytes per point.
 class FullConflictGraph {
 public:
     explicit FullConflictGraph(std::uint64_t seed) : walk_(seed) {}
@@ -42,6 +42,7 @@ public:
         const std::size_t n = engine.geometry().size();
         home_.assign(n, kNoTet);
         seen_.assign(n, 0);
+        conflicts_of_.assign(n, 0);
         grow(engine.storage().capacity());
         const TetId solid = engine.last_solid();
         std::array<TetId, 5> first{solid};
@@ -81,6 +82,9 @@ public:
         dead_lists_.clear();
         for (TetId d : engine.deleted()) {
             const std::uint64_t size = lists_[d].size();
+            for (VertexId q : lists_[d]) {
+                --conflicts_of_[q];
+            }
             (ghost_[d] != 0 ? tally_.ghost_deleted : tally_.deleted) += size;
             tally_.live -= size;
             alive_[d] = 0;
@@ -117,6 +121,13 @@ public:
 
     const ConflictTally& tally() const { return tally_; }
 
+    /// The uninserted points in conflict with live tetrahedron t.
+    const std::vector<VertexId>& conflicts_of_tet(TetId t) const { return lists_[t]; }
+
+    /// How many live tetrahedra uninserted point q conflicts with: the cavity its insertion would
+    /// dig now (the greedy adversary of Exercise 1 inserts the largest first).
+    std::uint32_t conflicts_of(VertexId q) const { return conflicts_of_[q]; }
+
 private:
     void grow(std::size_t capacity) {
         if (lists_.size() < capacity) {
@@ -130,6 +141,7 @@ private:
     void adopt(TetId t, bool ghost, std::vector<VertexId> list) {
         for (VertexId q : list) {
             home_[q] = t;
+            ++conflicts_of_[q];
         }
         (ghost ? tally_.ghost_created : tally_.created) += list.size();
         tally_.live += list.size();
@@ -146,6 +158,7 @@ private:
     std::vector<std::vector<VertexId>> dead_lists_;
     std::vector<TetId> home_;          ///< by point: the last tetrahedron that took it
     std::vector<std::uint32_t> seen_;  ///< by point: the stamp of the last filtering
+    std::vector<std::uint32_t> conflicts_of_;  ///< by point: live tetrahedra it conflicts with
     std::uint32_t stamp_ = 0;
     ConflictTally tally_;
 };
