@@ -1,5 +1,6 @@
 // `cavity generate`: writes a point set of a named distribution (uniform, degenerate, weighted).
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
@@ -48,9 +49,13 @@ void add_generate_command(CLI::App& app) {
     CLI::App* generate = app.add_subcommand("generate", "Write a generated point set");
     std::vector<std::string> names;
     std::string list = "Distributions:\n";
+    std::size_t width = 0;  // the longest name, and two spaces
+    for (const core::Distribution& d : core::distributions()) {
+        width = std::max(width, d.name.size() + 2);
+    }
     for (const core::Distribution& d : core::distributions()) {
         names.emplace_back(d.name);
-        list += "  " + std::string(d.name) + std::string(12 - d.name.size(), ' ') +
+        list += "  " + std::string(d.name) + std::string(width - d.name.size(), ' ') +
                 std::string(d.description) + "\n";
     }
     generate->add_option("distribution", options->distribution, "Distribution (listed below)")

@@ -33,7 +33,10 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", version);
     for (CLI::App* command : app.get_subcommands({})) {
         command->set_version_flag("--version", version);
-        command->footer(cavity::cli::kExitStatusHelp);
+        // After the command's own footer (generate lists its distributions there).
+        const std::string own = command->get_footer();
+        command->footer(own.empty() ? std::string(cavity::cli::kExitStatusHelp)
+                                    : own + "\n" + cavity::cli::kExitStatusHelp);
     }
     app.footer(cavity::cli::kExitStatusHelp);
     try {

@@ -13,7 +13,7 @@ namespace cavity::core {
 
 namespace {
 
-constexpr std::array<Distribution, 10> kDistributions = {{
+constexpr std::array<Distribution, 11> kDistributions = {{
     {"cube", "uniform in the unit cube [0,1)^3"},
     {"ball", "uniform in the unit ball (rejection from the cube [-1,1)^3)"},
     {"sphere", "random unit vectors, rounded: nearly cospherical"},
@@ -25,6 +25,9 @@ constexpr std::array<Distribution, 10> kDistributions = {{
     {"paraboloid", "z = x^2+y^2 over the integer grid x, y in {-floor(k/2)..}, k = round(sqrt n)"},
     {"moment", "the moment curve (t, t^2, t^3), t = 0..n-1"},
     {"skew-lines", "ceil(n/2) points (t,0,0) and floor(n/2) points (0,t,1), t = 0, 1, ..."},
+    {"pierced-skew-lines",
+     "skew-lines of n-1 points, then the point midway between their middles: inserted last, it "
+     "deletes a constant fraction of the Theta(n^2) tetrahedra (§5.2)"},
     {"layers", "4 coplanar layers z = 0..3 (point i on layer i mod 4), x, y uniform in [0,1)"},
 }};
 
@@ -147,6 +150,14 @@ void skew_lines(std::vector<Point3>& out, std::size_t n) {
     }
 }
 
+// (m1-1)/2 and (m2-1)/2 are half-integers, so the middle point is exact.
+void pierced_skew_lines(std::vector<Point3>& out, std::size_t n) {
+    skew_lines(out, n - 1);
+    const std::size_t m1 = n / 2;        // ceil((n-1)/2)
+    const std::size_t m2 = (n - 1) / 2;  // floor((n-1)/2)
+    out.push_back({(static_cast<double>(m1) - 1) / 2, (static_cast<double>(m2) - 1) / 2, 0.5});
+}
+
 void layers(std::vector<Point3>& out, std::size_t n, Random& random) {
     for (std::size_t i = 0; i < n; ++i) {
         const double x = random.uniform01();
@@ -249,6 +260,8 @@ PointSet generate_points(std::string_view distribution,
         moment(out, n);
     } else if (distribution == "skew-lines") {
         skew_lines(out, n);
+    } else if (distribution == "pierced-skew-lines") {
+        pierced_skew_lines(out, n);
     } else if (distribution == "layers") {
         layers(out, n, random);
     } else {

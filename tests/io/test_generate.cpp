@@ -1,6 +1,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <set>
 #include <string>
 #include <tuple>
@@ -11,6 +12,7 @@
 #include "cavity/core/error.h"
 #include "cavity/core/generate.h"
 #include "cavity/core/random.h"
+#include "cavity/core/triangulate.h"
 
 namespace cavity::core {
 namespace {
@@ -181,6 +183,19 @@ TEST(Generate, ExactCurvesAndSurfaces) {
         EXPECT_EQ(skew.points[i].y, static_cast<double>(i - 4));
         EXPECT_EQ(skew.points[i].z, 1.0);
     }
+    // §5.2: one insertion can delete Θ(n²) tetrahedra. The skew lines of 399 points have
+    // 199 * 198 tetrahedra; the point between the lines' middles, inserted last, deletes most.
+    const PointSet pierced = generate_points("pierced-skew-lines", 400, 0);
+    ASSERT_EQ(pierced.size(), 400u);
+    EXPECT_EQ(pierced.points.back().x, 99.5);
+    EXPECT_EQ(pierced.points.back().y, 99.0);
+    EXPECT_EQ(pierced.points.back().z, 0.5);
+    std::vector<std::uint32_t> input(pierced.size());
+    std::iota(input.begin(), input.end(), 0u);
+    TriangulateOptions options;
+    options.count = true;
+    const Triangulation tri = triangulate(pierced, input, options);
+    EXPECT_GT(tri.counters.max_cavity, 199u * 198u * 7 / 10);
 }
 
 TEST(Generate, SeedsDecide) {
