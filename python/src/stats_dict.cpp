@@ -23,6 +23,13 @@ py::dict counters_dict(const core::Counters& c) {
     d["perturbations"] = c.perturbations;
     d["perturbation_cofactors"] = c.perturbation_cofactors;
     d["hash_probes"] = c.hash_probes;
+    // Theorem 5.4's conflicts: counted by the full conflict graph (locate="conflict-graph-all"),
+    // zero otherwise.
+    d["conflicts_created"] = c.conflicts_created;
+    d["ghost_conflicts_created"] = c.ghost_conflicts_created;
+    d["conflicts_deleted"] = c.conflicts_deleted;
+    d["ghost_conflicts_deleted"] = c.ghost_conflicts_deleted;
+    d["live_conflicts_max"] = c.live_conflicts_max;
     // Same order as core::PredicateKind.
     constexpr std::array<const char*, core::kPredicateKindCount> kKinds{
         "orient3d", "insphere", "orient4d", "ghost"};

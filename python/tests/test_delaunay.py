@@ -21,13 +21,17 @@ def test_random_points_are_well_formed_and_valid(rng):
 
 
 @pytest.mark.parametrize("order", ["brio", "hilbert", "zorder", "random", "input"])
-@pytest.mark.parametrize("locate", ["walk", "conflict-graph"])
+@pytest.mark.parametrize("locate", ["walk", "conflict-graph", "conflict-graph-all"])
 def test_every_order_and_locator_gives_the_same_tetrahedra(rng, order, locate):
     points = rng.random((300, 3))
     reference = sorted_rows(cavity.Delaunay(points).simplices)
     d = cavity.Delaunay(points, order=order, locate=locate, seed=7)
     assert sorted_rows(d.simplices) == reference
     assert d.stats["order"] == order and d.stats["locate"] == locate
+    # Only the full conflict graph keeps (and so counts) every conflict; all are freed by the end.
+    assert (d.stats["conflicts_created"] > 0) == (locate == "conflict-graph-all")
+    assert (d.stats["conflicts_created"] + d.stats["ghost_conflicts_created"] ==
+            d.stats["conflicts_deleted"] + d.stats["ghost_conflicts_deleted"])
 
 
 def test_hash_storage_gives_the_same_tetrahedra(rng):
