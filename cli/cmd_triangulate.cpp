@@ -75,6 +75,7 @@ void write_counters(JsonWriter& json, const core::Counters& c, bool conflicts) {
     json.integer("dig_tests", c.dig_tests);
     json.integer("walk_steps", c.walk_steps);
     json.integer("walk_orient_calls", c.walk_orient_calls);
+    json.integer("walk_fallbacks", c.walk_fallbacks);
     json.integer("points_redistributed", c.points_redistributed);
     json.integer("redistribution_steps", c.redistribution_steps);
     json.integer("perturbations", c.perturbations);
@@ -389,9 +390,10 @@ void add_triangulate_command(CLI::App& app) {
     cmd->add_option("--locate",
                     args->locate,
                     "point location: the visibility walk (§5.5), the book's conflict graph (one "
-                    "cell per point, §5.4), or the full conflict graph keeping every conflict "
-                    "(Clarkson-Shor; counts Theorem 5.4's conflicts)")
-        ->check(CLI::IsMember({"walk", "conflict-graph", "conflict-graph-all"}))
+                    "cell per point, §5.4), the full conflict graph keeping every conflict "
+                    "(Clarkson-Shor; counts Theorem 5.4's conflicts), or the book's straight-line "
+                    "walk (§5.5)")
+        ->check(CLI::IsMember({"walk", "conflict-graph", "conflict-graph-all", "straight-walk"}))
         ->capture_default_str();
     cmd->add_option("--storage", args->storage, "tetrahedron storage")
         ->check(CLI::IsMember({"array", "hash"}))

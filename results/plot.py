@@ -252,14 +252,19 @@ def plot_loglog_suite(inp, out, md, suite, key, title, ylabel, per_point, ref):
     md.append(f"## {suite}: {title}\n")
     md.append(f"| dist | order | n range | {key}{'/n' if per_point else ''} at largest n | fitted slope |")
     md.append("|---|---|---|---|---|")
-    for (dist, order), rs in sorted(group(rows, "dist", "order").items()):
+    several = len({r.get("locate", "-") for r in rows}) > 1
+    for k, ((dist, order, locate), rs) in enumerate(
+            sorted(group(rows, "dist", "order", "locate").items())):
         ns, ys = mean_by_n(rs, key)
         if per_point:
             ys = [y / n for y, n in zip(ys, ns)]
         ys_plot = [max(y, 1e-3) for y in ys]
         s = slope(ns, ys_plot)
-        ax.loglog(ns, ys_plot, "o-", ms=3, label=f"{dist} {order} (slope {s:.2f})")
-        md.append(f"| {dist} | {order} | {ns[0]}–{ns[-1]} | {ys[-1]:.3g} | {s:.2f} |")
+        name = f"{dist} {order}" + (f" {locate}" if several else "")
+        ax.loglog(ns, ys_plot, color=COLOURS[k % len(COLOURS)], ls=LINE_STYLES[k % len(LINE_STYLES)],
+                  marker="o", ms=3, label=f"{name} (slope {s:.2f})")
+        md.append(f"| {dist} | {order}{' ' + locate if several else ''} | {ns[0]}–{ns[-1]} | "
+                  f"{ys[-1]:.3g} | {s:.2f} |")
     for exponent, label in ref:
         n = np.array([min(int(r["points"]) for r in rows), max(int(r["points"]) for r in rows)], float)
         base = np.median([num(r, key) / (int(r["points"]) if per_point else 1) for r in rows])

@@ -221,7 +221,8 @@ def walk_rounds(rows):
     """{order: {n: (mean of round_first_walk_mean, max of round_first_walk_max,
     mean of round_rest_walk_mean)}} over the BRIO rows that carry the trace."""
     out = defaultdict(dict)
-    traced = [r for r in rows if r.get("round_first_walk_mean", "-") not in ("-", "")]
+    traced = [r for r in rows if r.get("round_first_walk_mean", "-") not in ("-", "")
+              and r.get("locate", "walk") == "walk"]
     for (order, n), rs in sorted(group_rows(traced, "order", "points").items()):
         out[order][int(n)] = (mean([float(r["round_first_walk_mean"]) for r in rs]),
                               max(float(r["round_first_walk_max"]) for r in rs),
@@ -245,20 +246,30 @@ def walk_section(inp):
     seeds = sorted({r["seed"] for r in rows})
     out.append(f"*Setup (generated).* {rows[0]['dist']} points, n = "
                f"{', '.join(str(n) for n in ns)}, {len(seeds)} seeds, walking from the last created "
-               "solid tetrahedron (a visibility walk, remembering and stochastic: not the book's "
-               "straight-line walk).")
+               "solid tetrahedron: `walk` is the visibility walk (remembering and stochastic), "
+               "`straight-walk` the book's straight-line walk from the start tetrahedron's "
+               "centroid.")
     out.append("")
-    out.append("| order | walk steps per insertion at " + str(ns[-1]) + " | fitted slope against n |")
-    out.append("|---|---|---|")
+    out.append("| order | locator | walk steps per insertion at " + str(ns[-1]) +
+               " | fitted slope against n | orient3d calls per insertion | straight-walk "
+               "fallbacks |")
+    out.append("|---|---|---|---|---|---|")
     slopes = {}
-    for (order,), rs in sorted(group_rows(rows, "order").items()):
+    steps = {}
+    for (order, locate), rs in sorted(group_rows(rows, "order", "locate").items()):
         by_n = defaultdict(list)
         for r in rs:
             by_n[int(r["points"])].append(float(r["walk_steps_per_point"]))
         xs = sorted(by_n)
         ys = [mean(by_n[n]) for n in xs]
-        slopes[order] = loglog_slope(xs, ys)
-        out.append(f"| {order} | {ys[-1]:.2f} | {slopes[order]:.2f} |")
+        largest = [r for r in rs if int(r["points"]) == xs[-1]]
+        calls = mean([float(r["walk_orient_calls"]) / xs[-1] for r in largest])
+        fallbacks = sum(int(r.get("walk_fallbacks", "0") or 0) for r in rs)
+        if locate == "walk":
+            slopes[order] = loglog_slope(xs, ys)
+        steps[(order, locate)] = ys[-1]
+        out.append(f"| {order} | {locate} | {ys[-1]:.2f} | {loglog_slope(xs, ys):.2f} | "
+                   f"{calls:.1f} | {fallbacks if 'walk_fallbacks' in r else '-'} |")
     out.append("")
     rounds = walk_rounds(rows)
     if "brio" in rounds and "brio-noreverse" in rounds:
@@ -293,7 +304,11 @@ def walk_section(inp):
         + (f". Reversing alternate rounds makes each round's first walk {gain:.1f} times shorter "
            f"at n = {ns[-1]}; without it the first walk grows with slope {s_not:.2f} (a walk across "
            f"the domain, n^(1/3) predicted), with it {s_rev:.2f}. Per-point averages hide this: "
-           "one walk per round is O(log n) walks in all." if not math.isnan(gain) else "."))
+           "one walk per round is O(log n) walks in all." if not math.isnan(gain) else ".")
+        + (f" The straight-line walk visits {steps[('random', 'straight-walk')]:.1f} tetrahedra per "
+           f"insertion under a uniform order at n = {ns[-1]}, against "
+           f"{steps[('random', 'walk')]:.1f} for the visibility walk."
+           if ('random', 'straight-walk') in steps and ('random', 'walk') in steps else ""))
     return "\n".join(out)
 
 

@@ -22,8 +22,11 @@ LocateKind parse_locate_kind(std::string_view name) {
     if (name == "conflict-graph-all") {
         return LocateKind::kFullConflictGraph;
     }
+    if (name == "straight-walk") {
+        return LocateKind::kStraightWalk;
+    }
     throw Error("unknown point location '" + std::string(name) +
-                "' (walk, conflict-graph, conflict-graph-all)");
+                "' (walk, conflict-graph, conflict-graph-all, straight-walk)");
 }
 
 StorageKind parse_storage_kind(std::string_view name) {

@@ -96,12 +96,30 @@ RoundWalks round_walks(const core::InsertionOrder& order, const std::vector<std:
 }  // namespace
 
 std::vector<std::string> triangulation_columns() {
-    std::vector<std::string> columns{
-        "points", "vertices", "order_s", "time_s", "us_per_point", "tets", "hull_triangles",
-        "created", "deleted", "ghosts_created", "ghosts_deleted", "created_per_point",
-        "deleted_per_point", "max_cavity", "dig_tests", "walk_steps", "walk_steps_per_point",
-        "walk_orient_calls", "redistributed", "redistribution_steps", "perturbations",
-        "perturbation_cofactors", "hash_probes"};
+    std::vector<std::string> columns{"points",
+                                     "vertices",
+                                     "order_s",
+                                     "time_s",
+                                     "us_per_point",
+                                     "tets",
+                                     "hull_triangles",
+                                     "created",
+                                     "deleted",
+                                     "ghosts_created",
+                                     "ghosts_deleted",
+                                     "created_per_point",
+                                     "deleted_per_point",
+                                     "max_cavity",
+                                     "dig_tests",
+                                     "walk_steps",
+                                     "walk_steps_per_point",
+                                     "walk_orient_calls",
+                                     "walk_fallbacks",
+                                     "redistributed",
+                                     "redistribution_steps",
+                                     "perturbations",
+                                     "perturbation_cofactors",
+                                     "hash_probes"};
     for (const char* kind : kKindNames) {
         for (int s = 0; s < predicates::kStageCount; ++s) {
             columns.push_back(std::string(kind) + "_" +
@@ -168,16 +186,30 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
     const auto count = static_cast<double>(points.size());
     const std::uint64_t vertices = points.size() - result.duplicates.size() - result.redundant.size();
     RunOutput out;
-    out.values = {number(std::uint64_t{points.size()}), number(vertices), number(order_s),
-                  number(time_s), number(time_s * 1e6 / count), number(std::uint64_t{result.tets.size()}),
-                  number(std::uint64_t{result.hull_triangles}), number(c.tets_created),
-                  number(c.tets_deleted), number(c.ghosts_created), number(c.ghosts_deleted),
+    out.values = {number(std::uint64_t{points.size()}),
+                  number(vertices),
+                  number(order_s),
+                  number(time_s),
+                  number(time_s * 1e6 / count),
+                  number(std::uint64_t{result.tets.size()}),
+                  number(std::uint64_t{result.hull_triangles}),
+                  number(c.tets_created),
+                  number(c.tets_deleted),
+                  number(c.ghosts_created),
+                  number(c.ghosts_deleted),
                   number(static_cast<double>(c.tets_created) / count),
-                  number(static_cast<double>(c.tets_deleted) / count), number(c.max_cavity),
-                  number(c.dig_tests), number(c.walk_steps),
-                  number(static_cast<double>(c.walk_steps) / count), number(c.walk_orient_calls),
-                  number(c.points_redistributed), number(c.redistribution_steps),
-                  number(c.perturbations), number(c.perturbation_cofactors), number(c.hash_probes)};
+                  number(static_cast<double>(c.tets_deleted) / count),
+                  number(c.max_cavity),
+                  number(c.dig_tests),
+                  number(c.walk_steps),
+                  number(static_cast<double>(c.walk_steps) / count),
+                  number(c.walk_orient_calls),
+                  number(c.walk_fallbacks),
+                  number(c.points_redistributed),
+                  number(c.redistribution_steps),
+                  number(c.perturbations),
+                  number(c.perturbation_cofactors),
+                  number(c.hash_probes)};
     for (const auto& kind : c.stage_calls) {
         for (std::uint64_t calls : kind) {
             out.values.push_back(number(calls));

@@ -16,6 +16,7 @@ py::dict counters_dict(const core::Counters& c) {
     d["dig_tests"] = c.dig_tests;
     d["walk_steps"] = c.walk_steps;
     d["walk_orient_calls"] = c.walk_orient_calls;
+    d["walk_fallbacks"] = c.walk_fallbacks;
     d["points_redistributed"] = c.points_redistributed;
     d["redistribution_steps"] = c.redistribution_steps;
     d["duplicates"] = c.duplicates;

@@ -21,7 +21,7 @@ def test_random_points_are_well_formed_and_valid(rng):
 
 
 @pytest.mark.parametrize("order", ["brio", "hilbert", "zorder", "random", "input"])
-@pytest.mark.parametrize("locate", ["walk", "conflict-graph", "conflict-graph-all"])
+@pytest.mark.parametrize("locate", ["walk", "conflict-graph", "conflict-graph-all", "straight-walk"])
 def test_every_order_and_locator_gives_the_same_tetrahedra(rng, order, locate):
     points = rng.random((300, 3))
     reference = sorted_rows(cavity.Delaunay(points).simplices)

@@ -27,8 +27,10 @@ TEST_P(Variants, ValidAndIdenticalForEveryOrderLocatorAndStorage) {
     std::vector<std::array<std::uint32_t, 4>> reference;
     for (OrderKind order : {OrderKind::kInput, OrderKind::kRandom, OrderKind::kBrio,
                             OrderKind::kHilbert, OrderKind::kZOrder}) {
-        for (LocateKind locate :
-             {LocateKind::kWalk, LocateKind::kConflictGraph, LocateKind::kFullConflictGraph}) {
+        for (LocateKind locate : {LocateKind::kWalk,
+                                  LocateKind::kConflictGraph,
+                                  LocateKind::kFullConflictGraph,
+                                  LocateKind::kStraightWalk}) {
             for (StorageKind storage : {StorageKind::kArray, StorageKind::kHash}) {
                 core::OrderOptions order_options;
                 order_options.kind = order;

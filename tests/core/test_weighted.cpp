@@ -63,7 +63,8 @@ TEST(Weighted, RandomWeightsValidAndOrderIndependent) {
         for (auto order : {core::OrderKind::kInput, core::OrderKind::kRandom}) {
             for (auto locate : {core::LocateKind::kWalk,
                                 core::LocateKind::kConflictGraph,
-                                core::LocateKind::kFullConflictGraph}) {
+                                core::LocateKind::kFullConflictGraph,
+                                core::LocateKind::kStraightWalk}) {
                 core::Triangulation other;
                 EXPECT_EQ(build(points, order, locate, &other), reference) << dist;
                 EXPECT_EQ(other.redundant, first.redundant) << dist;

@@ -25,6 +25,7 @@ struct Counters {
     std::uint64_t dig_tests = 0;          ///< conflict tests in DigCavity3D
     std::uint64_t walk_steps = 0;         ///< tetrahedra visited by walking point location
     std::uint64_t walk_orient_calls = 0;  ///< orient3d calls made by the walk
+    std::uint64_t walk_fallbacks = 0;     ///< straight-line walks finished by the visibility walk
     std::uint64_t points_redistributed = 0;  ///< conflict graph: uninserted points moved to a new cell
     std::uint64_t redistribution_steps = 0;  ///< conflict graph: cells visited while moving them
     std::uint64_t duplicates = 0;  ///< input points repeating an earlier one, not inserted

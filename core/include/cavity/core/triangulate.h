@@ -16,11 +16,12 @@ namespace cavity::core {
 /// Point location (§5.4 conflict graph, §5.5 walking).
 /// kFullConflictGraph keeps every conflict of every tetrahedron (Clarkson–Shor), the algorithm
 /// Theorem 5.4 analyses; it counts the conflicts as it goes.
-enum class LocateKind { kWalk, kConflictGraph, kFullConflictGraph };
+/// kStraightWalk is the book's straight-line walk (straight_walk.h), kWalk the visibility walk.
+enum class LocateKind { kWalk, kConflictGraph, kFullConflictGraph, kStraightWalk };
 /// Storage (§5.1 face hash table, or the compact array layout).
 enum class StorageKind { kArray, kHash };
 
-/// "walk", "conflict-graph", "conflict-graph-all"; throws Error.
+/// "walk", "conflict-graph", "conflict-graph-all", "straight-walk"; throws Error.
 LocateKind parse_locate_kind(std::string_view name);
 StorageKind parse_storage_kind(std::string_view name);  // "array", "hash"; throws Error
 

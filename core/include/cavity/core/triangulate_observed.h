@@ -10,6 +10,7 @@
 #include "cavity/core/face_hash_storage.h"
 #include "cavity/core/full_conflict_graph.h"
 #include "cavity/core/seek_conflict.h"
+#include "cavity/core/straight_walk.h"
 #include "cavity/core/triangulate.h"
 #include "cavity/core/walk.h"
 
@@ -145,6 +146,29 @@ private:
     Walk walk_;
 };
 
+/// The book's straight-line walk from the most recently created solid tetrahedron (§5.5).
+class StraightWalkLocator {
+public:
+    explicit StraightWalkLocator(std::uint64_t seed) : walk_(seed) {}
+
+    template <class Engine>
+    void start(Engine&) {}
+
+    template <class Engine>
+    TetId locate(Engine& engine, VertexId u) {
+        return walk_.locate(engine, engine.geometry().point(u), engine.last_solid());
+    }
+
+    template <class Engine>
+    void skip(Engine&, VertexId) {}
+
+    template <class Engine>
+    void after_insertion(Engine&, VertexId) {}
+
+private:
+    StraightWalk walk_;
+};
+
 template <class Storage, class Observer>
 void dispatch_locator(const Prepared& prep,
                       const TriangulateOptions& options,
@@ -153,6 +177,9 @@ void dispatch_locator(const Prepared& prep,
     Storage storage;
     if (options.locate == LocateKind::kWalk) {
         WalkLocator locator(options.seed);
+        run(prep, options, locator, storage, observer, out);
+    } else if (options.locate == LocateKind::kStraightWalk) {
+        StraightWalkLocator locator(options.seed);
         run(prep, options, locator, storage, observer, out);
     } else if (options.locate == LocateKind::kFullConflictGraph) {
         FullConflictGraph locator(options.seed);
