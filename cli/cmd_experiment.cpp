@@ -22,6 +22,7 @@ struct ExperimentArgs {
     bool seed_given = false;
     bool resume = false;
     bool merge = false;
+    bool partial = false;
     bool quiet = false;
     std::string command_line;
 };
@@ -58,7 +59,8 @@ void run_experiment_command(const ExperimentArgs& args) {
     options.out_dir = args.out.empty() ? std::filesystem::path("results/experiments") / args.tier
                                        : std::filesystem::path(args.out);
     options.resume = args.resume;
-    options.merge_only = args.merge;
+    options.merge_only = args.merge || args.partial;
+    options.partial = args.partial;
     if (args.seed_given) {
         options.seed = args.seed;
     }
@@ -87,7 +89,8 @@ void add_experiment_command(CLI::App& app) {
         "Run an experiment suite (experiments/suites/NAME.suite or a path) and write "
         "NAME.csv, NAME.j.csv and NAME.meta.json");
     cmd->add_option("suite", args->suite, "suite name or file")->required();
-    cmd->add_option("--tier", args->tier, "quick or full")->check(CLI::IsMember({"quick", "full"}));
+    cmd->add_option("--tier", args->tier, "quick, full or paper (the suites that have one)")
+        ->check(CLI::IsMember({"quick", "full", "paper"}));
     cmd->add_option("--out", args->out, "output directory (default results/experiments/TIER)");
     cmd->add_flag("--resume", args->resume, "skip runs already in the tables");
     cmd->add_option("--shard", args->shard, "run shard i of N (i/N); parts merge when all exist");
@@ -95,6 +98,10 @@ void add_experiment_command(CLI::App& app) {
         ->transform(integer_in("--seed", 0, UINT64_MAX))
         ->each([args](const std::string&) { args->seed_given = true; });
     cmd->add_flag("--merge", args->merge, "only merge finished shard parts");
+    cmd->add_flag("--partial",
+                  args->partial,
+                  "merge the runs measured so far, even if some are missing (a long tier stopped "
+                  "part-way); --resume continues from the merged table");
     cmd->add_flag("--quiet", args->quiet, "no progress bar or summary");
     cmd->callback([args] {
         args->command_line = "cavity experiment " + args->suite + " --tier " + args->tier;

@@ -261,7 +261,7 @@ HarnessResult run_experiment(const HarnessOptions& options) {
     for (const RunSpec& run : runs) {
         missing_rows += rows.count(join(key_values(run))) == 0 ? 1 : 0;
     }
-    if (missing_parts != 0 || missing_rows != 0) {
+    if ((missing_parts != 0 || missing_rows != 0) && !(options.merge_only && options.partial)) {
         if (options.merge_only) {
             throw Error(suite.name + ": cannot merge: " + std::to_string(missing_parts) +
                         " part file(s) and " + std::to_string(missing_rows) + " run(s) missing");
@@ -273,17 +273,26 @@ HarnessResult run_experiment(const HarnessOptions& options) {
     std::string j_table = j_header + "\n";
     for (const RunSpec& run : runs) {
         const std::string key = join(key_values(run));
-        table += rows[key] + "\n";
-        for (const std::string& row : j_rows[key]) {
-            j_table += row + "\n";
+        const auto row = rows.find(key);
+        if (row == rows.end()) {
+            continue;  // a partial merge: the run is not measured yet
+        }
+        table += row->second + "\n";
+        for (const std::string& j_row : j_rows[key]) {
+            j_table += j_row + "\n";
         }
     }
     group.add(mine.csv).write(table);
     if (has_j) {
         group.add(mine.j_csv).write(j_table);
     }
-    group.add(mine.meta).write(metadata_json(suite, options.tier, settings, runs.size(),
-                                             options.shard_count, options.command_line));
+    group.add(mine.meta).write(metadata_json(suite,
+                                             options.tier,
+                                             settings,
+                                             runs.size(),
+                                             runs.size() - missing_rows,
+                                             options.shard_count,
+                                             options.command_line));
     group.commit();
     for (std::uint64_t i = 1; i <= options.shard_count; ++i) {
         const Paths part = paths_for(options.out_dir, suite.name, i, options.shard_count);

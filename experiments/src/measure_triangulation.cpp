@@ -162,6 +162,8 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
     options.count = true;
     options.count_conflicts = suite.count_conflicts;
     options.seed = run.seed;
+    options.bootstrap =
+        suite.bootstrap_first ? core::BootstrapRule::kFirst : core::BootstrapRule::kWidest;
     const bool conflicts_counted =
         suite.count_conflicts || options.locate == core::LocateKind::kFullConflictGraph;
     const bool peak_known = reset_peak_rss();

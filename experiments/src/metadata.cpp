@@ -77,6 +77,7 @@ std::string metadata_json(const Suite& suite,
                           const std::string& tier,
                           const TierSettings& settings,
                           std::size_t runs,
+                          std::size_t runs_measured,
                           std::uint64_t shard_count,
                           const std::string& command_line) {
     const std::string source = CAVITY_SOURCE_DIR;
@@ -93,6 +94,7 @@ std::string metadata_json(const Suite& suite,
     field("suite_file", suite.file, true);
     field("tier", tier, true);
     field("runs", std::to_string(runs), false);
+    field("runs_measured", std::to_string(runs_measured), false);
     field("sizes", list(settings.sizes), false);
     field("seeds", list(settings.seeds), false);
     field("order_seed_offset", "1000", false);
@@ -101,6 +103,7 @@ std::string metadata_json(const Suite& suite,
     std::snprintf(ratio, sizeof ratio, "%.17g", suite.brio_ratio);
     field("brio_ratio", ratio, false);
     field("count_conflicts", suite.count_conflicts ? "true" : "false", false);
+    field("bootstrap", suite.bootstrap_first ? "first" : "widest", true);
     if (suite.kind == SuiteKind::kDeletion) {
         field("deletions", std::to_string(settings.deletions), false);
         field("deletion_seed_offset", "2000", false);

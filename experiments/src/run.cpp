@@ -27,9 +27,10 @@ std::vector<RunSpec> enumerate_runs(const Suite& suite, const TierSettings& tier
     const auto& orders = ordered ? suite.orders : none;
     const auto& locators = triangulates ? suite.locators : none;
     const auto& storages = triangulates ? suite.storages : none;
-    for (const std::string& dist : suite.distributions) {
-        const auto cap = suite.caps.find(dist);
-        for (std::uint64_t n : tier.sizes) {
+    // Sizes outermost: a long tier, stopped and resumed, has finished every smaller size first.
+    for (std::uint64_t n : tier.sizes) {
+        for (const std::string& dist : suite.distributions) {
+            const auto cap = suite.caps.find(dist);
             if (cap != suite.caps.end() && n > cap->second) {
                 continue;
             }

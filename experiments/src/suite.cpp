@@ -138,6 +138,21 @@ void check_order(const std::string& name) {
     }
 }
 
+/// The tier a per-tier key such as `n.paper` sets, or null when `key` is not `prefix` + a tier.
+TierSettings* tier_of_key(Suite& suite, const std::string& key, std::string_view prefix) {
+    if (key.rfind(prefix, 0) != 0) {
+        return nullptr;
+    }
+    const std::string_view tier = std::string_view(key).substr(prefix.size());
+    if (tier == "quick") {
+        return &suite.quick;
+    }
+    if (tier == "full") {
+        return &suite.full;
+    }
+    return tier == "paper" ? &suite.paper : nullptr;
+}
+
 }  // namespace
 
 std::string_view suite_kind_name(SuiteKind kind) {
@@ -163,7 +178,13 @@ const TierSettings& Suite::tier(std::string_view tier_name) const {
     if (tier_name == "full") {
         return full;
     }
-    throw Error("unknown tier '" + std::string(tier_name) + "' (quick or full)");
+    if (tier_name == "paper") {
+        if (paper.sizes.empty()) {
+            throw Error(file + ": the suite has no paper tier (no n.paper key)");
+        }
+        return paper;
+    }
+    throw Error("unknown tier '" + std::string(tier_name) + "' (quick, full or paper)");
 }
 
 Suite parse_suite(std::string_view text, const std::string& file, const std::string& name) {
@@ -239,19 +260,23 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
             if (stop != w.c_str() + w.size() || !(suite.brio_ratio >= 0 && suite.brio_ratio < 1)) {
                 reader.fail("brio-ratio must be a number in [0, 1), not '" + w + "'");
             }
-        } else if (key == "n.quick" || key == "n.full") {
-            (key == "n.quick" ? suite.quick : suite.full).sizes = reader.integers(words);
-        } else if (key == "seeds.quick" || key == "seeds.full") {
-            (key == "seeds.quick" ? suite.quick : suite.full).seeds = reader.integers(words);
-        } else if (key == "orders.quick" || key == "orders.full") {
-            const std::uint64_t r = reader.integer(single());
-            if (r == 0) {
+        } else if (TierSettings* sizes_of = tier_of_key(suite, key, "n.")) {
+            sizes_of->sizes = reader.integers(words);
+        } else if (TierSettings* seeds_of = tier_of_key(suite, key, "seeds.")) {
+            seeds_of->seeds = reader.integers(words);
+        } else if (TierSettings* orders_of = tier_of_key(suite, key, "orders.")) {
+            orders_of->orders = reader.integer(single());
+            if (orders_of->orders == 0) {
                 reader.fail("orders must be positive");
             }
-            (key == "orders.quick" ? suite.quick : suite.full).orders = r;
-        } else if (key == "deletions.quick" || key == "deletions.full") {
-            const std::uint64_t k = reader.integer(single());
-            (key == "deletions.quick" ? suite.quick : suite.full).deletions = k;
+        } else if (TierSettings* deletions_of = tier_of_key(suite, key, "deletions.")) {
+            deletions_of->deletions = reader.integer(single());
+        } else if (key == "bootstrap") {
+            const std::string& w = single();
+            if (w != "widest" && w != "first") {
+                reader.fail("bootstrap takes widest or first, not '" + w + "'");
+            }
+            suite.bootstrap_first = w == "first";
         } else if (key == "validate") {
             const std::string& w = single();
             if (w != "yes" && w != "no" && w.find_first_not_of("0123456789") != std::string::npos) {
@@ -284,7 +309,10 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
     for (const auto& [capped, line] : cap_lines) {
         LineReader(file, line).names({capped}, check_name);
     }
-    for (const TierSettings* t : {&suite.quick, &suite.full}) {
+    if (seen.count("n.paper") != seen.count("seeds.paper")) {
+        throw Error(located_message(file, std::nullopt, "n.paper and seeds.paper go together"));
+    }
+    for (const TierSettings* t : {&suite.quick, &suite.full, &suite.paper}) {
         if (std::find(t->sizes.begin(), t->sizes.end(), 0u) != t->sizes.end()) {
             throw Error(located_message(file, std::nullopt, "a size of 0 points"));
         }

@@ -81,6 +81,35 @@ TEST_F(Harness, ShardsMergeIntoTheUnshardedTable) {
     EXPECT_EQ(stable_columns(dir_ / "whole" / "tiny.csv"), stable_columns(dir_ / "sharded" / "tiny.csv"));
 }
 
+TEST_F(Harness, APartialMergeResumesIntoTheWholeTable) {
+    run_experiment(options("tiny", "whole"));
+    HarnessOptions o = options("tiny", "long");
+    o.shard_count = 3;
+    o.shard_index = 1;
+    const HarnessResult first = run_experiment(o);  // a third of the runs, then stopped
+    EXPECT_FALSE(first.merged);
+    o.merge_only = true;
+    EXPECT_THROW(run_experiment(o), core::Error);  // a plain merge refuses missing runs
+    o.partial = true;
+    const HarnessResult merged = run_experiment(o);
+    EXPECT_TRUE(merged.merged);
+    EXPECT_EQ(stable_columns(dir_ / "long" / "tiny.csv").size(), first.runs_done);
+    std::ifstream meta(dir_ / "long" / "tiny.meta.json");
+    const std::string text((std::istreambuf_iterator<char>(meta)),
+                           std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("\"runs_measured\": " + std::to_string(first.runs_done)),
+              std::string::npos);
+    // Later, one unsharded process continues from the partial table and redoes nothing.
+    HarnessOptions rest = options("tiny", "long");
+    rest.resume = true;
+    const HarnessResult finished = run_experiment(rest);
+    EXPECT_EQ(finished.runs_skipped, first.runs_done);
+    EXPECT_EQ(finished.runs_done, 16u - first.runs_done);
+    EXPECT_TRUE(finished.merged);
+    EXPECT_EQ(stable_columns(dir_ / "whole" / "tiny.csv"),
+              stable_columns(dir_ / "long" / "tiny.csv"));
+}
+
 TEST_F(Harness, ResumeSkipsFinishedRows) {
     HarnessOptions o = options("tiny", "out");
     run_experiment(o);

@@ -22,6 +22,9 @@ order     random brio-noreverse
 locate    walk conflict-graph
 count-conflicts yes
 brio-ratio 0.125
+bootstrap first
+n.paper   1000 10000
+seeds.paper 1..5
 )";
 
 TEST(Suite, ParsesEveryKey) {
@@ -35,6 +38,13 @@ TEST(Suite, ParsesEveryKey) {
     EXPECT_FALSE(suite.validate);
     EXPECT_TRUE(suite.count_conflicts);
     EXPECT_EQ(suite.brio_ratio, 0.125);
+    EXPECT_TRUE(suite.bootstrap_first);
+    EXPECT_EQ(suite.tier("paper").sizes, (std::vector<std::uint64_t>{1000, 10000}));
+    EXPECT_EQ(suite.tier("paper").seeds.size(), 5u);
+    // Sizes outermost: a long tier stopped part-way has finished its smaller sizes.
+    const std::vector<RunSpec> paper = enumerate_runs(suite, suite.paper);
+    EXPECT_TRUE(std::is_sorted(
+        paper.begin(), paper.end(), [](const RunSpec& a, const RunSpec& b) { return a.n < b.n; }));
     // 2 dists x 2 sizes x 3 seeds x 2 orders x 2 locators.
     EXPECT_EQ(enumerate_runs(suite, suite.quick).size(), 48u);
 }
@@ -74,11 +84,33 @@ TEST(Suite, MalformedLinesAreNamedByFileAndLine) {
               std::string::npos);
     EXPECT_NE(error_of(head + "dist cube\n").find("bad.suite: missing key 'n.quick'"),
               std::string::npos);
+    EXPECT_NE(
+        error_of(head + "dist cube\nbootstrap best\n" + rest).find("bad.suite:4: bootstrap takes"),
+        std::string::npos);
+    EXPECT_NE(error_of(head + "dist cube\nn.paper 10\n" + rest)
+                  .find("n.paper and seeds.paper go together"),
+              std::string::npos);
+    EXPECT_NE(
+        error_of(head + "dist cube\nn.huge 10\n" + rest).find("bad.suite:4: unknown key 'n.huge'"),
+        std::string::npos);
+    try {
+        parse_suite(head + "dist cube\n" + rest, "bad.suite", "bad").tier("paper");
+        ADD_FAILURE() << "a suite without n.paper has no paper tier";
+    } catch (const core::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("no paper tier"), std::string::npos);
+    }
     EXPECT_EQ(error_of(head + "dist cube\n" + rest), "");
 }
 
 TEST(Suite, ShippedSuitesParse) {
-    for (const char* name : {"jtets", "creation", "scaling", "quadratic", "walk", "adversarial", "degenerate"}) {
+    for (const char* name : {"jtets",
+                             "creation",
+                             "scaling",
+                             "theorem",
+                             "quadratic",
+                             "walk",
+                             "adversarial",
+                             "degenerate"}) {
         const std::string path = std::string(CAVITY_SUITES_DIR) + "/" + name + ".suite";
         EXPECT_NO_THROW(read_suite(path)) << path;
     }

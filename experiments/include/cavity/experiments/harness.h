@@ -29,6 +29,9 @@ struct HarnessOptions {
     std::uint64_t shard_count = 1;
     std::optional<std::uint64_t> seed;  ///< replaces the suite's seed list
     bool merge_only = false;            ///< only merge finished parts
+    /// With merge_only: merge the rows measured so far even when runs are missing (a long tier
+    /// stopped part-way); the metadata says how many. A later `resume` continues from the table.
+    bool partial = false;
     std::string command_line;           ///< recorded in the metadata
     /// (work done, total work), in arbitrary cost units; may be empty.
     std::function<void(double, double)> progress;
@@ -43,8 +46,8 @@ struct HarnessResult {
 };
 
 /// Runs (a shard of) a suite. \throws Error for a malformed suite, bad options, a run that fails
-/// (naming it), a part file whose header differs from the suite's columns, or, with merge_only,
-/// missing parts or rows.
+/// (naming it), a part file whose header differs from the suite's columns, or, with merge_only
+/// and not partial, missing parts or rows.
 HarnessResult run_experiment(const HarnessOptions& options);
 
 }  // namespace cavity::experiments

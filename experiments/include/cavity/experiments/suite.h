@@ -17,11 +17,14 @@
 ///                                       (plc_families.h) (required)
 ///   n.quick   N...   n.full N...        sizes per tier (required)
 ///   seeds.quick S... seeds.full S...    point (and order) seeds; `A..B` is a range (required)
+///   n.paper   N...   seeds.paper S...   the paper tier (optional; a suite without it has none)
 ///   order     NAME...                   input random brio brio-noreverse hilbert zorder
 ///                                       (default random)
 ///   locate    walk|conflict-graph|conflict-graph-all...   (default walk)
 ///   storage   array|hash...             (default array)
 ///   count-conflicts yes|no              runs: count every tetrahedron's conflicts (default no)
+///   bootstrap widest|first              runs: the first tetrahedron (default widest); `first`
+///                                       keeps a uniform order an exactly uniform permutation
 ///   brio-ratio R                        (default 0.5) fraction carried into earlier rounds,
 ///                                       in [0, 1): CGAL's and geogram's 1/8 is 0.125
 ///   orders.quick R  orders.full R       creation, hj: insertion orders per point set (default 100)
@@ -69,6 +72,9 @@ struct Suite {
     /// `count-conflicts yes`: every run counts Theorem 5.4's conflicts with the kd-tree counter
     /// (the full conflict graph counts them anyway); its time is then in time_s.
     bool count_conflicts = false;
+    /// `bootstrap first`: the order's own first four affinely independent points start the
+    /// triangulation, so a uniform order stays the permutation Theorem 5.4 assumes.
+    bool bootstrap_first = false;
     bool validate = false;
     std::uint64_t validate_max = UINT64_MAX;  ///< `validate N`: larger runs are not checked
 
@@ -77,8 +83,10 @@ struct Suite {
     std::map<std::string, std::uint64_t> caps;
     TierSettings quick;
     TierSettings full;
+    TierSettings paper;  ///< empty sizes: the suite has no paper tier
 
-    const TierSettings& tier(std::string_view name) const;  ///< "quick" or "full"; throws Error
+    /// "quick", "full" or "paper" (when the suite has one); throws Error otherwise.
+    const TierSettings& tier(std::string_view name) const;
 };
 
 /// Parses suite text; `file` names it in error messages (file:line: what).
