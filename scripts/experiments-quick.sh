@@ -14,7 +14,7 @@ if [[ ! -x "$build/cli/cavity" ]]; then
 fi
 out=results/experiments/quick
 start=$(date +%s)
-for suite in jtets creation brio scaling quadratic walk adversarial degenerate peers giftwrap deletion cdt cdtvalid; do
+for suite in jtets creation brio scaling theorem locality quadratic walk adversarial degenerate peers giftwrap deletion cdt cdtvalid; do
   t0=$(date +%s)
   "$build/cli/cavity" experiment "$suite" --tier quick --out "$out" --quiet
   echo "$suite: $(( $(date +%s) - t0 )) s"

@@ -19,13 +19,15 @@ std::vector<RunSpec> enumerate_runs(const Suite& suite, const TierSettings& tier
     std::vector<RunSpec> runs;
     const bool triangulates = suite.kind == SuiteKind::kRuns || suite.kind == SuiteKind::kDegenerate ||
                               suite.kind == SuiteKind::kPeers;
+    // The locality kind traces the array storage, so only its locator varies.
+    const bool locates = triangulates || suite.kind == SuiteKind::kLocality;
     const std::vector<std::string> none{"-"};
     // Only insertion-order experiments vary the order: jtets has none, deletion builds with a
     // BRIO (its result does not depend on the order), cdt inserts the PLC's points in input order.
     const bool ordered = suite.kind != SuiteKind::kJTets && suite.kind != SuiteKind::kDeletion &&
                          suite.kind != SuiteKind::kCdt;
     const auto& orders = ordered ? suite.orders : none;
-    const auto& locators = triangulates ? suite.locators : none;
+    const auto& locators = locates ? suite.locators : none;
     const auto& storages = triangulates ? suite.storages : none;
     // Sizes outermost: a long tier, stopped and resumed, has finished every smaller size first.
     for (std::uint64_t n : tier.sizes) {
@@ -57,6 +59,8 @@ double run_cost(const Suite& suite, const TierSettings& tier, const RunSpec& run
             return n * std::log(n + 1) * static_cast<double>(tier.orders);
         case SuiteKind::kDegenerate: return n * 10;
         case SuiteKind::kPeers: return n * 3;
+        case SuiteKind::kLocality:
+            return n * 4;
         case SuiteKind::kGiftWrap: return n * n * 0.1;  // O(nh) apex tests
         case SuiteKind::kDeletion: return n * 3 + static_cast<double>(tier.deletions) * 100;
         case SuiteKind::kCdt: return n * n * 0.01;  // region scans: O(h) per polygon
@@ -72,6 +76,8 @@ std::vector<std::string> metric_columns(SuiteKind kind) {
         case SuiteKind::kHj:
             return measure::hj_columns();
         case SuiteKind::kPeers: return measure::peers_columns();
+        case SuiteKind::kLocality:
+            return measure::locality_columns();
         case SuiteKind::kGiftWrap: return measure::giftwrap_columns();
         case SuiteKind::kDeletion: return measure::deletion_columns();
         case SuiteKind::kCdt: return measure::cdt_columns();
@@ -91,6 +97,7 @@ std::vector<std::string> j_columns(SuiteKind kind) {
         case SuiteKind::kCdt: return measure::cdt_j_columns();
         case SuiteKind::kGiftWrap:
         case SuiteKind::kPeers:
+        case SuiteKind::kLocality:
         case SuiteKind::kRuns:
         case SuiteKind::kDegenerate: break;
     }
@@ -104,6 +111,8 @@ RunOutput execute_run(const Suite& suite, const TierSettings& tier, const RunSpe
         case SuiteKind::kHj:
             return measure::hj(suite, tier, run);
         case SuiteKind::kPeers: return measure::peers(suite, run);
+        case SuiteKind::kLocality:
+            return measure::locality(suite, run);
         case SuiteKind::kGiftWrap: return measure::giftwrap(suite, run);
         case SuiteKind::kDeletion: return measure::deletion(suite, tier, run);
         case SuiteKind::kCdt: return measure::cdt(suite, run);

@@ -104,14 +104,16 @@ SuiteKind parse_kind(const LineReader& reader, const std::string& word) {
                                     SuiteKind::kGiftWrap,
                                     SuiteKind::kDeletion,
                                     SuiteKind::kCdt,
-                                    SuiteKind::kHj};
+                                    SuiteKind::kHj,
+                                    SuiteKind::kLocality};
     for (SuiteKind kind : kKinds) {
         if (word == suite_kind_name(kind)) {
             return kind;
         }
     }
-    reader.fail("unknown kind '" + word +
-                "' (runs, jtets, creation, degenerate, peers, giftwrap, deletion, cdt or hj)");
+    reader.fail(
+        "unknown kind '" + word +
+        "' (runs, jtets, creation, degenerate, peers, giftwrap, deletion, cdt, hj or locality)");
 }
 
 void check_distribution(const std::string& name) {
@@ -162,6 +164,8 @@ std::string_view suite_kind_name(SuiteKind kind) {
         case SuiteKind::kCreation: return "creation";
         case SuiteKind::kHj:
             return "hj";
+        case SuiteKind::kLocality:
+            return "locality";
         case SuiteKind::kDegenerate: return "degenerate";
         case SuiteKind::kPeers: return "peers";
         case SuiteKind::kGiftWrap: return "giftwrap";

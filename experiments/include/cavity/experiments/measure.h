@@ -29,6 +29,12 @@ RunOutput hj(const Suite& suite, const TierSettings& tier, const RunSpec& run);
 std::vector<std::string> hj_columns();
 std::vector<std::string> hj_j_columns();
 
+/// §5.3's locality: the engine's tetrahedron and point records touched per insertion, as 64-byte
+/// lines and 4 KiB pages, and the misses of LRU caches of several sizes (memory_model.h), with the
+/// walk as locator. Compares uniform, BRIO and space-filling orders.
+RunOutput locality(const Suite& suite, const RunSpec& run);
+std::vector<std::string> locality_columns();
+
 /// cavity against its peers on the same points, each engine in a child process of its own: CPU
 /// seconds, tetrahedra and peak memory of cavity (order + triangulation), CGAL's
 /// Delaunay_triangulation_3 (when built with CGAL) and TetGen (when `tetgen` is on PATH), and

@@ -12,7 +12,7 @@
 /// Suite files are line based: `key value value ...`, `#` starts a comment, blank lines are
 /// ignored. Keys (each at most once):
 ///   question  TEXT                      what the suite checks (required)
-///   kind      runs|jtets|creation|degenerate|peers|giftwrap|deletion|cdt|hj   (required)
+///   kind      runs|jtets|creation|degenerate|peers|giftwrap|deletion|cdt|hj|locality (required)
 ///   dist      NAME...                   generate_points distributions; for cdt, PLC families
 ///                                       (plc_families.h) (required)
 ///   n.quick   N...   n.full N...        sizes per tier (required)
@@ -47,7 +47,8 @@ enum class SuiteKind {
     kGiftWrap,
     kDeletion,
     kCdt,
-    kHj
+    kHj,
+    kLocality
 };
 
 std::string_view suite_kind_name(SuiteKind kind);
