@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Plots and summary tables from the experiment CSVs (cavity experiment ... --out IN_DIR).
 
-Usage: /usr/bin/python3 results/plot.py IN_DIR OUT_DIR
+Usage: /usr/bin/python3 results/plot.py IN_DIR OUT_DIR [PAPER_DIR]
 Writes OUT_DIR/*.png and *.svg, and OUT_DIR/summary.md with every number the report quotes.
 Suites whose CSV is missing are skipped. Run with Debian's python3-matplotlib.
 """
@@ -13,7 +13,8 @@ from collections import defaultdict
 
 import matplotlib
 
-from report import Z95, brio_estimates, walk_rounds  # the estimators the report's text uses
+# The estimators the report's text uses, so plots and text cannot disagree.
+from report import Z95, brio_estimates, fit_limit, fit_log, seed_bootstrap, walk_rounds
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -664,8 +665,120 @@ def plot_brio(inp, out, md):
     md.append("")
 
 
+def plot_theorem(inp, out, md, paper=None):
+    """Theorem 5.4 from counters: Σj/n with its fit, created and deleted per point against their
+    limits, walk steps; 95 % bootstrap bands over seeds. The paper tier's table when present."""
+    source = paper if paper and read(os.path.join(paper, "theorem.csv")) else inp
+    rows = read(os.path.join(source, "theorem.csv"))
+    if rows is None:
+        return
+    md.append(f"## theorem (Theorem 5.4 at scale; tables from `{source}`)\n")
+    md.append("| dist | n | seeds | quantity | mean | 95 % low | 95 % high |")
+    md.append("|---|---|---|---|---|---|---|")
+    fig, axes = plt.subplots(1, 3, figsize=(17, 5))
+    keys = [("conflicts_per_point", r"$\Sigma j / n$"), ("created_per_point", "created / n"),
+            ("deleted_per_point", "deleted / n"), ("walk_steps_per_point", "walk steps / n")]
+    for k, ((dist,), rs) in enumerate(sorted(group(rows, "dist").items())):
+        colour = COLOURS[(2 * k) % len(COLOURS)]
+        by = {key: defaultdict(list) for key, _ in keys}
+        for r in rs:
+            for key, _ in keys:
+                by[key][int(r["points"])].append(num(r, key))
+        bands = {}
+        for key, label in keys:
+            ns = sorted(by[key])
+            stats = [seed_bootstrap({n: by[key][n]}, lambda g, n=n: float(np.mean(g[n]))) for n in ns]
+            bands[key] = (ns, stats)
+            for n, (m, lo, hi) in zip(ns, stats):
+                md.append(f"| {dist} | {n} | {len(by[key][n])} | {key} | {m:.4g} | {lo:.4g} | {hi:.4g} |")
+        style = dict(color=colour, ls=LINE_STYLES[k % len(LINE_STYLES)], marker="os^v"[k % 4], ms=3)
+        for ax, key in ((axes[0], "conflicts_per_point"), (axes[2], "walk_steps_per_point")):
+            ns, stats = bands[key]
+            ax.plot(ns, [m for m, _, _ in stats], label=dist, **style)
+            ax.fill_between(ns, [lo for _, lo, _ in stats], [hi for _, _, hi in stats], color=colour,
+                            alpha=0.25)
+        for key, ls in (("created_per_point", "-"), ("deleted_per_point", "--")):
+            ns, stats = bands[key]
+            axes[1].errorbar(ns, [m for m, _, _ in stats],
+                             yerr=[[m - lo for m, lo, _ in stats], [hi - m for m, _, hi in stats]],
+                             color=colour, ls=ls, marker="os^v"[k % 4], ms=3, capsize=2,
+                             label=f"{dist}, {'created' if key.startswith('created') else 'deleted'}")
+        conflicts = by["conflicts_per_point"]
+        if len(conflicts) >= 4 and min(len(v) for v in conflicts.values()) >= 2:
+            a, b, c = fit_log(conflicts)
+            n = np.geomspace(min(conflicts), max(conflicts))
+            axes[0].plot(n, a * np.log(n) + b + c * n ** (-1 / 3), color=colour, lw=0.8, ls=":",
+                         label=f"{dist} fit: {a:.1f} ln n {b:+.0f} {c:+.0f} n^(-1/3)")
+            for key, limit in (("created_per_point", CREATED_PER_POINT), ("deleted_per_point", DELETED_PER_POINT)):
+                A, B = fit_limit(by[key])
+                axes[1].plot(n, A + B * n ** (-1 / 3), color=colour, lw=0.6, ls=":")
+    ns_all = sorted({int(r["points"]) for r in rows})
+    n = np.geomspace(ns_all[0], ns_all[-1])
+    axes[0].plot(n, CONFLICT_SLOPE * (np.log(n) + POISSON_CONFLICT_OFFSET), "k--", lw=1,
+                 label=r"unbounded Poisson: $81.2(\ln n - 2.26)$")
+    axes[0].set(xscale="log", xlabel="n", ylabel=r"$\Sigma j / n$",
+                title="Theorem 5.4: conflicts created per point\n(95 % bootstrap bands over seeds)")
+    axes[1].axhline(CREATED_PER_POINT, color="k", lw=1, label=f"created limit {CREATED_PER_POINT:.2f}")
+    axes[1].axhline(DELETED_PER_POINT, color="k", lw=1, ls="--", label=f"deleted limit {DELETED_PER_POINT:.2f}")
+    axes[1].set(xscale="log", xlabel="n", ylabel="tetrahedra per point",
+                title="tetrahedra created and deleted per point\n(dotted: fits A + B n^(-1/3))")
+    axes[2].plot(n, float(np.mean([num(r, "walk_steps_per_point") for r in rows
+                                   if int(r["points"]) == ns_all[0]])) * (n / ns_all[0]) ** (1 / 3),
+                 "k:", lw=1, label=r"$\propto n^{1/3}$")
+    axes[2].set(xscale="log", yscale="log", xlabel="n", ylabel="walk steps per insertion",
+                title="walk steps per insertion, uniform order\n(from the last tetrahedron created)")
+    for ax in axes:
+        ax.legend(fontsize=7)
+        ax.grid(True, which="both", alpha=0.3)
+    save(fig, out, "theorem")
+    md.append("")
+
+
+def plot_locality(inp, out, md):
+    rows = read(os.path.join(inp, "locality.csv"))
+    if rows is None:
+        return
+    md.append("## locality (§5.3, simulated LRU caches)\n")
+    line_cols = [k for k in rows[0] if k.startswith("line_misses_")]
+    page_cols = [k for k in rows[0] if k.startswith("page_misses_")]
+    ns = sorted({int(r["points"]) for r in rows})
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.6))
+    md.append("| n | order | seeds | pages / insertion | " + " | ".join(line_cols + page_cols) + " |")
+    md.append("|---|---|---|---|" + "---|" * len(line_cols + page_cols))
+    for k, ((order,), rs) in enumerate(sorted(group(rows, "order").items())):
+        colour = COLOURS[(2 * k) % len(COLOURS)]
+        for n in ns:
+            at = [r for r in rs if int(r["points"]) == n]
+            if at:
+                md.append(f"| {n} | {order} | {len(at)} | "
+                          f"{np.mean([num(r, 'pages_per_insertion') for r in at]):.2f} | " +
+                          " | ".join(f"{np.mean([num(r, c) for r in at]):.4g}" for c in line_cols + page_cols) + " |")
+        big = [r for r in rs if int(r["points"]) == ns[-1]]
+        for cols, block, ls, what in ((line_cols, 64, "--", "lines"), (page_cols, 4096, "-", "pages")):
+            sizes = [int(c.split("_")[-1]) * block for c in cols]
+            misses = [float(np.mean([num(r, c) for r in big])) for c in cols]
+            axes[0].plot(sizes, misses, color=colour, ls=ls, marker="os^v"[k % 4], ms=4,
+                         label=f"{order}: {what} missed")
+        n_of, pages = mean_by_n(rs, "pages_per_insertion")
+        axes[1].plot(n_of, pages, color=colour, ls=LINE_STYLES[k % len(LINE_STYLES)],
+                     marker="os^v"[k % 4], ms=4, label=f"{order}")
+    # First accesses miss in every cache, so every value is positive.
+    axes[0].set(xscale="log", yscale="log", xlabel="LRU cache size (bytes)",
+                ylabel="misses per insertion", title=f"§5.3: misses per insertion at n = {ns[-1]}")
+    axes[1].set(xscale="log", yscale="log", xlabel="n", ylabel="distinct 4 KiB pages per insertion",
+                title="working set of one insertion")
+    for ax in axes:
+        ax.legend(fontsize=7)
+        ax.grid(True, which="both", alpha=0.3)
+    save(fig, out, "locality")
+    md.append("")
+
+
 def main():
+    if len(sys.argv) not in (3, 4):
+        sys.exit(__doc__)
     inp, out = sys.argv[1], sys.argv[2]
+    paper = sys.argv[3] if len(sys.argv) == 4 else None
     os.makedirs(out, exist_ok=True)
     md = ["# Measured summary (generated by results/plot.py; do not edit)\n",
           f"Input tables: `{inp}`.\n"]
@@ -673,6 +786,8 @@ def main():
     plot_creation(inp, out, md)
     plot_brio(inp, out, md)
     plot_scaling(inp, out, md)
+    plot_theorem(inp, out, md, paper)
+    plot_locality(inp, out, md)
     plot_loglog_suite(inp, out, md, "quadratic", "created", "quadratic families: tetrahedra created",
                       "tetrahedra created", False, [(2, "slope 2")])
     plot_loglog_suite(inp, out, md, "walk", "walk_steps", "walk steps per insertion", "walk steps / n",

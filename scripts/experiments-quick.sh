@@ -13,13 +13,19 @@ if [[ ! -x "$build/cli/cavity" ]]; then
   cmake --build "$build" -j2 --target cavity
 fi
 out=results/experiments/quick
+paper=results/experiments/paper  # the paper tier's tables, when committed (see results/README.md)
 start=$(date +%s)
+cost="suite,wall_s,load_average"
 for suite in jtets creation brio scaling theorem locality quadratic walk adversarial degenerate peers giftwrap deletion cdt cdtvalid; do
   t0=$(date +%s)
   "$build/cli/cavity" experiment "$suite" --tier quick --out "$out" --quiet
+  cost+=$'\n'"$suite,$(( $(date +%s) - t0 )),$(cut -d' ' -f1 /proc/loadavg)"
   echo "$suite: $(( $(date +%s) - t0 )) s"
 done
+# The report's cost section is written from this table: wall time per suite and the load average
+# when the suite ended (other jobs on the machine slow the wall clock).
+printf '%s\n' "$cost" > "$out/cost.csv.tmp" && mv "$out/cost.csv.tmp" "$out/cost.csv"
 # Debian's matplotlib: /usr/bin/python3, not whichever python3 comes first on PATH.
-/usr/bin/python3 results/plot.py "$out" results/experiments/plots
-/usr/bin/python3 results/report.py "$out" results/README.md
+/usr/bin/python3 results/plot.py "$out" results/experiments/plots "$paper"
+/usr/bin/python3 results/report.py "$out" results/README.md "$paper"
 echo "quick tier: $(( $(date +%s) - start )) s in all; report: results/README.md"

@@ -24,6 +24,21 @@ CSV
   echo "cube,1000,random,conflict-graph-all,array,1,1000,24,17,6500,200000,200,1000,15000"
   echo "cube,10000,random,conflict-graph-all,array,1,10000,26,19,67000,4000000,400,5000,190000"
 } > in/scaling.csv
+# A theorem table built from the model itself, Σj/n = 81.21 ln n - 300 + 500 n^(-1/3) with
+# per-seed noise of ±1: the fitted slope's interval must contain 81.21, and the created and
+# deleted limits 27.07 and 20.30.
+/usr/bin/python3 - > in/theorem.csv <<'PY'
+import math
+print("dist,n,order,locate,storage,seed,points,time_s,created_per_point,deleted_per_point,"
+      "conflicts_per_point,walk_steps_per_point,insphere_filter,insphere_adaptive,insphere_exact")
+for n in (1000, 10000, 100000, 1000000, 10000000):
+    for seed, noise in ((1, -1.0), (2, 0.0), (3, 1.0)):
+        s = n ** (-1 / 3)
+        print(f"cube,{n},random,walk,array,{seed},{n},1.5,{27.0739 - 30 * s + noise / 100:.6f},"
+              f"{20.3054 - 25 * s + noise / 100:.6f},{81.21 * math.log(n) - 300 + 500 * s + noise:.6f},"
+              f"{n ** (1 / 3):.3f},{40 * n},0,0")
+PY
+printf 'suite,wall_s,load_average\njtets,61,1.5\ncreation,59,2.5\n' > in/cost.csv
 cat > README.md <<'MD'
 # kept
 <!-- BEGIN GENERATED creation (results/report.py; do not edit) -->
@@ -32,6 +47,10 @@ old text
 between
 <!-- BEGIN GENERATED scaling (results/report.py; do not edit) -->
 <!-- END GENERATED scaling -->
+<!-- BEGIN GENERATED theorem (results/report.py; do not edit) -->
+<!-- END GENERATED theorem -->
+<!-- BEGIN GENERATED cost (results/report.py; do not edit) -->
+<!-- END GENERATED cost -->
 MD
 /usr/bin/python3 "$report" in README.md || fail "report.py failed"
 grep -q "^# kept$" README.md && grep -q "^between$" README.md || fail "text outside the markers changed"
@@ -43,6 +62,13 @@ grep -q "differ from the exact expectations beyond their 95 % intervals in 1 of 
 # (400 - 200) / ln 10 = 86.9 per unit of ln n
 grep -q "| cube | random | 200.0 \[200.0–200.0\] | 400.0 \[400.0–400.0\] | 86.9 |" README.md ||
   fail "scaling row: $(grep '| cube | random' README.md)"
+grep -q "contains Theorem 5.4's 81.21 in its interval for cube\." README.md ||
+  fail "theorem verdict: $(grep 'Verdict (computed). The slope' README.md)"
+grep -q "The limits of created and deleted per point contain the Poisson constants for cube\." README.md ||
+  fail "theorem limits: $(grep 'limits of created' README.md)"
+grep -q "| cube | 81.2 \[" README.md || fail "theorem fit row: $(grep '^| cube | 8' README.md)"
+grep -q "took 2 min 0 s wall.*load average of 1.5–2.5.*jtets 61 s, creation 59 s" README.md ||
+  fail "cost: $(grep 'Cost (generated)' README.md)"
 printf '# no markers\n' > plain.md
 /usr/bin/python3 "$report" in plain.md 2>/dev/null && fail "a README without markers was accepted"
 if [ "$failures" -ne 0 ]; then
