@@ -36,11 +36,41 @@ double max_abs(const Point3& p) {
 }
 
 /// A ball certain to hold every point in conflict with a solid tetrahedron, or `bounded` false
-/// when no such ball can be certified in floating point.
+/// when no such ball can be certified in floating point; and, for unweighted points, a concentric
+/// ball certain to hold only conflicts (`inner`, negative when none is certified). A point
+/// strictly inside the circumsphere conflicts whatever the perturbation, and no inserted point
+/// can be (the tetrahedron is Delaunay when created), so every point of a box inside the inner
+/// ball is an uninserted conflict: such boxes are counted whole.
 struct Reach {
     bool bounded = false;
     Point3 centre{};
     double radius = 0;
+    double inner = -1;
+
+    bool includes_distance(double computed) const {
+        return std::isfinite(computed) && computed * (1 + kDistanceSlack) < inner;
+    }
+
+    bool includes(const Point3& q) const {
+        if (max_abs(q) > kLargest) {
+            return false;
+        }
+        const double dx = q.x - centre.x;
+        const double dy = q.y - centre.y;
+        const double dz = q.z - centre.z;
+        return includes_distance(std::sqrt(dx * dx + dy * dy + dz * dz));
+    }
+
+    bool includes(const Box3& b) const {
+        if (inner <= 0 || std::max(max_abs(b.lo), max_abs(b.hi)) > kLargest) {
+            return false;
+        }
+        // The farthest corner, per axis.
+        const double dx = std::max(std::fabs(centre.x - b.lo.x), std::fabs(centre.x - b.hi.x));
+        const double dy = std::max(std::fabs(centre.y - b.lo.y), std::fabs(centre.y - b.hi.y));
+        const double dz = std::max(std::fabs(centre.z - b.lo.z), std::fabs(centre.z - b.hi.z));
+        return includes_distance(std::sqrt(dx * dx + dy * dy + dz * dz));
+    }
 
     bool excludes_distance(double computed) const {
         return std::isfinite(computed) && computed * (1 - kDistanceSlack) > radius;
@@ -139,6 +169,12 @@ Reach conflict_reach(const Geometry& g, const TetVertices& t, double max_weight)
         (reach_squared > 0 ? std::sqrt(reach_squared) : 0.0) * (1 + kDistanceSlack) + centre_error;
     reach.bounded = std::isfinite(reach.radius) && max_abs(reach.centre) <= kLargest &&
                     reach.radius <= kLargest;
+    if (reach.bounded && !g.weighted()) {
+        // The true radius is at least |x| - x_error (|x| computed with a relative error under
+        // the slack), and the true centre within centre_error of the computed one.
+        const double x_norm_low = x_norm * (1 - 2 * kDistanceSlack);
+        reach.inner = (x_norm_low - x_error) * (1 - kDistanceSlack) - centre_error;
+    }
     return reach;
 }
 
@@ -165,15 +201,20 @@ std::uint64_t ConflictCountingObserver::count_solid(const TetVertices& v) {
     const Reach reach = conflict_reach(*geometry_, v, max_weight_);
     std::uint64_t j = 0;
     std::uint64_t tests = 0;
-    tree_->query([&](const Box3& box) { return !reach.bounded || !reach.excludes(box); },
-                 [&](std::uint32_t id, const Point3& q) {
-                     if (id == v[0] || id == v[1] || id == v[2] || id == v[3] ||
-                         (reach.bounded && reach.excludes(q))) {
-                         return;
-                     }
-                     ++tests;
-                     j += geometry_->conflicts_solid(v, id, nullptr) ? 1 : 0;
-                 });
+    j += tree_->count([&](const Box3& box) { return !reach.bounded || !reach.excludes(box); },
+                      [&](const Box3& box) { return reach.includes(box); },
+                      [&](std::uint32_t id, const Point3& q) {
+                          if (id == v[0] || id == v[1] || id == v[2] || id == v[3] ||
+                              (reach.bounded && reach.excludes(q))) {
+                              return;
+                          }
+                          if (reach.includes(q)) {
+                              ++j;  // strictly inside: a conflict without the exact test
+                              return;
+                          }
+                          ++tests;
+                          j += geometry_->conflicts_solid(v, id, nullptr) ? 1 : 0;
+                      });
     totals.conflict_tests += tests;
     return j;
 }

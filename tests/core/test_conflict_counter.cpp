@@ -11,6 +11,7 @@
 #include "cavity/core/conflict_counter.h"
 #include "cavity/core/generate.h"
 #include "cavity/core/insertion_order.h"
+#include "cavity/core/point_kd_tree.h"
 #include "cavity/core/triangulate.h"
 #include "cavity/core/triangulate_observed.h"
 #include "cavity/perturbation/sos.h"
@@ -208,6 +209,46 @@ TEST(ConflictCounter, TheFullConflictGraphCountsTheSame) {
             EXPECT_GT(graph.conflicts_created, 0u);
             options.locate = LocateKind::kFullConflictGraph;
             EXPECT_NO_THROW(triangulate(points, sequence.sequence, options));
+        }
+    }
+}
+
+}  // namespace
+}  // namespace cavity::core
+
+namespace cavity::core {
+namespace {
+
+// PointKdTree::count certifies whole boxes: the points it counts whole plus those it visits and
+// finds inside must be exactly the points inside, for regions that do and do not cover boxes.
+TEST(PointKdTree, CountingWholeBoxesMissesAndRepeatsNothing) {
+    const PointSet points = generate_points("cube", 5000, 11);
+    const PointKdTree tree(points.points);
+    for (const double half : {0.02, 0.1, 0.3, 0.7}) {
+        const Box3 region{{0.5 - half, 0.4 - half, 0.6 - half},
+                          {0.5 + half, 0.4 + half, 0.6 + half}};
+        const auto inside = [&](const Point3& p) {
+            return p.x >= region.lo.x && p.x <= region.hi.x && p.y >= region.lo.y &&
+                   p.y <= region.hi.y && p.z >= region.lo.z && p.z <= region.hi.z;
+        };
+        std::uint64_t visited_inside = 0;
+        std::uint64_t visits = 0;
+        const std::uint64_t whole = tree.count(
+            [&](const Box3& b) {
+                return b.lo.x <= region.hi.x && b.hi.x >= region.lo.x && b.lo.y <= region.hi.y &&
+                       b.hi.y >= region.lo.y && b.lo.z <= region.hi.z && b.hi.z >= region.lo.z;
+            },
+            [&](const Box3& b) { return inside(b.lo) && inside(b.hi); },
+            [&](std::uint32_t, const Point3& p) {
+                ++visits;
+                visited_inside += inside(p) ? 1 : 0;
+            });
+        const auto expected = static_cast<std::uint64_t>(
+            std::count_if(points.points.begin(), points.points.end(), inside));
+        EXPECT_EQ(whole + visited_inside, expected) << "half side " << half;
+        if (half >= 0.3) {
+            EXPECT_GT(whole, expected / 2) << "large regions are counted mostly by whole boxes";
+            EXPECT_LT(visits, points.size() / 2);
         }
     }
 }

@@ -53,6 +53,40 @@ public:
         }
     }
 
+    /// As query(), but a box for which holds_all(box) is true (tested only where may_hold is)
+    /// is counted whole, without visiting its points; returns how many points were so counted.
+    /// A region's interior is one that can certify whole boxes: counting is then proportional to
+    /// the boxes along its boundary, not to the points it holds.
+    template <class MayHold, class HoldsAll, class Visit>
+    std::uint64_t count(MayHold&& may_hold, HoldsAll&& holds_all, Visit&& visit) const {
+        std::uint64_t whole = 0;
+        if (nodes_.empty()) {
+            return whole;
+        }
+        std::uint32_t stack[64];
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const Node& node = nodes_[stack[--top]];
+            if (!may_hold(node.box)) {
+                continue;
+            }
+            if (holds_all(node.box)) {
+                whole += node.end - node.begin;
+                continue;
+            }
+            if (node.left == 0) {
+                for (std::uint32_t k = node.begin; k < node.end; ++k) {
+                    visit(ids_[k], points_[k]);
+                }
+                continue;
+            }
+            stack[top++] = node.left + 1;
+            stack[top++] = node.left;
+        }
+        return whole;
+    }
+
     std::size_t size() const { return ids_.size(); }
 
 private:
