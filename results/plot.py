@@ -677,7 +677,10 @@ def plot_theorem(inp, out, md, paper=None):
     md.append("|---|---|---|---|---|---|---|")
     fig, axes = plt.subplots(1, 3, figsize=(17, 5))
     keys = [("conflicts_per_point", r"$\Sigma j / n$"), ("created_per_point", "created / n"),
-            ("deleted_per_point", "deleted / n"), ("walk_steps_per_point", "walk steps / n")]
+            ("deleted_per_point", "deleted / n"), ("location_per_point", "location steps / n")]
+    for r in rows:  # point location's work: walk steps, or the conflict graph's moves
+        r["location_per_point"] = str((num(r, "walk_steps") + num(r, "redistribution_steps")) /
+                                      num(r, "points"))
     for k, ((dist,), rs) in enumerate(sorted(group(rows, "dist").items())):
         colour = COLOURS[(2 * k) % len(COLOURS)]
         by = {key: defaultdict(list) for key, _ in keys}
@@ -692,7 +695,7 @@ def plot_theorem(inp, out, md, paper=None):
             for n, (m, lo, hi) in zip(ns, stats):
                 md.append(f"| {dist} | {n} | {len(by[key][n])} | {key} | {m:.4g} | {lo:.4g} | {hi:.4g} |")
         style = dict(color=colour, ls=LINE_STYLES[k % len(LINE_STYLES)], marker="os^v"[k % 4], ms=3)
-        for ax, key in ((axes[0], "conflicts_per_point"), (axes[2], "walk_steps_per_point")):
+        for ax, key in ((axes[0], "conflicts_per_point"), (axes[2], "location_per_point")):
             ns, stats = bands[key]
             ax.plot(ns, [m for m, _, _ in stats], label=dist, **style)
             ax.fill_between(ns, [lo for _, lo, _ in stats], [hi for _, _, hi in stats], color=colour,
@@ -722,11 +725,9 @@ def plot_theorem(inp, out, md, paper=None):
     axes[1].axhline(DELETED_PER_POINT, color="k", lw=1, ls="--", label=f"deleted limit {DELETED_PER_POINT:.2f}")
     axes[1].set(xscale="log", xlabel="n", ylabel="tetrahedra per point",
                 title="tetrahedra created and deleted per point\n(dotted: fits A + B n^(-1/3))")
-    axes[2].plot(n, float(np.mean([num(r, "walk_steps_per_point") for r in rows
-                                   if int(r["points"]) == ns_all[0]])) * (n / ns_all[0]) ** (1 / 3),
-                 "k:", lw=1, label=r"$\propto n^{1/3}$")
-    axes[2].set(xscale="log", yscale="log", xlabel="n", ylabel="walk steps per insertion",
-                title="walk steps per insertion, uniform order\n(from the last tetrahedron created)")
+    locate = ", ".join(sorted({r["locate"] for r in rows}))
+    axes[2].set(xscale="log", xlabel="n", ylabel="location steps per point",
+                title=f"point location's work per point ({locate})\nwalk steps or points moved between cells")
     for ax in axes:
         ax.legend(fontsize=7)
         ax.grid(True, which="both", alpha=0.3)

@@ -580,7 +580,9 @@ def theorem_section(inp, paper=None):
                "tetrahedron's conflicts counted exactly (kd-tree counter). Intervals: 95 % percentile "
                f"bootstrap over seeds ({BOOTSTRAP_RESAMPLES} resamples).")
     out.append("")
-    out.append("| dist | n | seeds | created/n | deleted/n | Σj/n | walk steps/n | insphere beyond filter |")
+    locate = ", ".join(sorted({r["locate"] for r in rows}))
+    out.append(f"| dist | n | seeds | created/n | deleted/n | Σj/n | location steps/n ({locate}) | "
+               "insphere beyond filter |")
     out.append("|---|---|---|---|---|---|---|---|")
     fits = []
     for dist in dists:
@@ -591,7 +593,8 @@ def theorem_section(inp, paper=None):
             by["created"][n].append(float(r["created_per_point"]))
             by["deleted"][n].append(float(r["deleted_per_point"]))
             by["conflicts"][n].append(float(r["conflicts_per_point"]))
-            by["walk"][n].append(float(r["walk_steps_per_point"]))
+            # Point location's work: walk steps, or the conflict graph's points moved between cells.
+            by["walk"][n].append((float(r["walk_steps"]) + float(r["redistribution_steps"])) / n)
         for n in sorted(by["created"]):
             cells = []
             for key in ("created", "deleted", "conflicts", "walk"):

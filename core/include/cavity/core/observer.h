@@ -28,6 +28,10 @@ struct NullObserver {
     void on_tet_deleted(TetId, std::uint64_t /*step*/) {}
 
     void on_insertion(const InsertionRecord&) {}
+
+    /// Called once after the last insertion, before the counters are read: an observer that
+    /// defers work (the conflict counter counts in batches) completes it here.
+    void on_finish() {}
 };
 
 /// Counts everything in Counters.

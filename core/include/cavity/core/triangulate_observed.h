@@ -96,6 +96,7 @@ void run(const Prepared& prep,
         out.redundant.push_back(geometry.key(v));
     }
     std::sort(out.redundant.begin(), out.redundant.end());
+    observer.on_finish();
     out.storage_bytes = storage.bytes();
     out.tets.reserve(storage.live_count());
     storage.drain([&](const TetVertices& v) {
