@@ -51,6 +51,15 @@ def save(fig, out, name):
     plt.close(fig)
 
 
+def finish(fig, axes, out, name, md, legend_size=7):
+    """Legends and grids on every panel, the figure saved, and the summary section closed."""
+    for ax in axes:
+        ax.legend(fontsize=legend_size)
+        ax.grid(True, which="both", alpha=0.3)
+    save(fig, out, name)
+    md.append("")
+
+
 def slope(xs, ys):
     """Least-squares slope of log y against log x."""
     lx, ly = np.log(np.asarray(xs, float)), np.log(np.asarray(ys, float))
@@ -101,11 +110,7 @@ def plot_jtets(inp, out, md):
     axes[0].set(xlabel="j + 1", ylabel="$F_j / n$", title="uniform points: $F_j = O(j^3 n)$")
     axes[1].loglog(j + 1, (j + 1) * (j + 2) / 8.0, "k--", label=r"$(j+1)(j+2)/8$ (two lines, $j \ll m$)")
     axes[1].set(xlabel="j + 1", ylabel="$F_j / n^2$", title="quadratic families: $F_j = O(j^2 n^2)$")
-    for ax in axes:
-        ax.legend(fontsize=7)
-        ax.grid(True, which="both", alpha=0.3)
-    save(fig, out, "jtets")
-    md.append("")
+    finish(fig, axes, out, "jtets", md, legend_size=7)
     meta = read(os.path.join(inp, "jtets.csv"))
     for r in meta:
         if r["closed_form_match"] != "-":
@@ -238,11 +243,7 @@ def plot_scaling(inp, out, md):
     axes[1].set(xlabel="n", ylabel="seconds",
                 title="time of the counting engine (log–log, fitted slopes;\nnoisy under load)")
     plot_conflicts(axes[2], rows, md)
-    for ax in axes:
-        ax.legend(fontsize=6)
-        ax.grid(True, which="both", alpha=0.3)
-    save(fig, out, "scaling")
-    md.append("")
+    finish(fig, axes, out, "scaling", md, legend_size=6)
 
 
 def plot_loglog_suite(inp, out, md, suite, key, title, ylabel, per_point, ref):
@@ -618,11 +619,7 @@ def plot_cdt(inp, out, md):
                 title="per PLC: flips against n")
     axes[3].set(xlabel="|R| (tetrahedra crossing the polygon)", ylabel="tetrahedra visited",
                 title="per polygon: depth-first search against |R|")
-    for ax in axes:
-        ax.legend(fontsize=6)
-        ax.grid(True, which="both", alpha=0.3)
-    save(fig, out, "cdt")
-    md.append("")
+    finish(fig, axes, out, "cdt", md, legend_size=6)
 
 
 def plot_brio(inp, out, md):
@@ -658,11 +655,7 @@ def plot_brio(inp, out, md):
     axes[1].axhline(0, color="k", lw=1)
     axes[1].set(xscale="log", xlabel="j", ylabel=r"$\hat q_j / q_j^{\rm uniform} - 1$",
                 title="BRIO's departure from the uniform order")
-    for ax in axes:
-        ax.legend(fontsize=7)
-        ax.grid(True, which="both", alpha=0.3)
-    save(fig, out, "brio")
-    md.append("")
+    finish(fig, axes, out, "brio", md, legend_size=7)
 
 
 def plot_theorem(inp, out, md, paper=None):
@@ -728,11 +721,7 @@ def plot_theorem(inp, out, md, paper=None):
     locate = ", ".join(sorted({r["locate"] for r in rows}))
     axes[2].set(xscale="log", xlabel="n", ylabel="location steps per point",
                 title=f"point location's work per point ({locate})\nwalk steps or points moved between cells")
-    for ax in axes:
-        ax.legend(fontsize=7)
-        ax.grid(True, which="both", alpha=0.3)
-    save(fig, out, "theorem")
-    md.append("")
+    finish(fig, axes, out, "theorem", md, legend_size=7)
 
 
 def plot_locality(inp, out, md):
@@ -768,11 +757,7 @@ def plot_locality(inp, out, md):
                 ylabel="misses per insertion", title=f"§5.3: misses per insertion at n = {ns[-1]}")
     axes[1].set(xscale="log", yscale="log", xlabel="n", ylabel="distinct 4 KiB pages per insertion",
                 title="working set of one insertion")
-    for ax in axes:
-        ax.legend(fontsize=7)
-        ax.grid(True, which="both", alpha=0.3)
-    save(fig, out, "locality")
-    md.append("")
+    finish(fig, axes, out, "locality", md, legend_size=7)
 
 
 def main():

@@ -51,14 +51,16 @@ struct Reach {
         return std::isfinite(computed) && computed * (1 + kDistanceSlack) < inner;
     }
 
-    bool includes(const Point3& q) const {
+    /// The computed distance from the centre, or NaN (which every test below declines) where the
+    /// coordinates are too large for the error bounds.
+    double distance(const Point3& q) const {
         if (max_abs(q) > kLargest) {
-            return false;
+            return std::numeric_limits<double>::quiet_NaN();
         }
         const double dx = q.x - centre.x;
         const double dy = q.y - centre.y;
         const double dz = q.z - centre.z;
-        return includes_distance(std::sqrt(dx * dx + dy * dy + dz * dz));
+        return std::sqrt(dx * dx + dy * dy + dz * dz);
     }
 
     bool includes(const Box3& b) const {
@@ -74,16 +76,6 @@ struct Reach {
 
     bool excludes_distance(double computed) const {
         return std::isfinite(computed) && computed * (1 - kDistanceSlack) > radius;
-    }
-
-    bool excludes(const Point3& q) const {
-        if (max_abs(q) > kLargest) {
-            return false;
-        }
-        const double dx = q.x - centre.x;
-        const double dy = q.y - centre.y;
-        const double dz = q.z - centre.z;
-        return excludes_distance(std::sqrt(dx * dx + dy * dy + dz * dz));
     }
 
     bool excludes(const Box3& b) const {
@@ -213,11 +205,14 @@ std::uint64_t ConflictCountingObserver::count_solid(const TetVertices& v) {
     j += tree_->count([&](const Box3& box) { return !reach.bounded || !reach.excludes(box); },
                       [&](const Box3& box) { return reach.includes(box); },
                       [&](std::uint32_t id, const Point3& q) {
-                          if (id == v[0] || id == v[1] || id == v[2] || id == v[3] ||
-                              (reach.bounded && reach.excludes(q))) {
+                          if (id == v[0] || id == v[1] || id == v[2] || id == v[3]) {
                               return;
                           }
-                          if (reach.includes(q)) {
+                          const double d = reach.distance(q);
+                          if (reach.bounded && reach.excludes_distance(d)) {
+                              return;
+                          }
+                          if (reach.includes_distance(d)) {
                               ++j;  // strictly inside: a conflict without the exact test
                               return;
                           }

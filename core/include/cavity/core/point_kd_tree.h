@@ -31,26 +31,8 @@ public:
     /// a test "the region meets the box" has that property).
     template <class MayHold, class Visit>
     void query(MayHold&& may_hold, Visit&& visit) const {
-        if (nodes_.empty()) {
-            return;
-        }
-        std::uint32_t stack[64];
-        int top = 0;
-        stack[top++] = 0;
-        while (top > 0) {
-            const Node& node = nodes_[stack[--top]];
-            if (!may_hold(node.box)) {
-                continue;
-            }
-            if (node.left == 0) {
-                for (std::uint32_t k = node.begin; k < node.end; ++k) {
-                    visit(ids_[k], points_[k]);
-                }
-                continue;
-            }
-            stack[top++] = node.left + 1;
-            stack[top++] = node.left;
-        }
+        count(
+            may_hold, [](const Box3&) { return false; }, visit);
     }
 
     /// As query(), but a box for which holds_all(box) is true (tested only where may_hold is)
