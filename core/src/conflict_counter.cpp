@@ -195,7 +195,7 @@ void ConflictCountingObserver::on_start(const Geometry& geometry) {
         }
     }
     histogram_.assign(kHistogramBins, 0);
-    pending_.reserve(kBatch);
+    pending_.reserve(batch_);
 }
 
 std::uint64_t ConflictCountingObserver::count_solid(const TetVertices& v) {
@@ -329,7 +329,7 @@ void ConflictCountingObserver::on_tet_created(TetId t, const TetVertices& v, std
     }
     pending_.push_back({v, t, static_cast<std::uint32_t>(step), kAlive});
     pending_of_[t] = static_cast<std::uint32_t>(pending_.size());
-    if (pending_.size() == kBatch) {
+    if (pending_.size() == batch_) {
         count_batch();
     }
 }

@@ -86,7 +86,9 @@ Counters count(const PointSet& points, OrderKind kind, LocateKind locate, BruteF
     const InsertionOrder sequence = make_insertion_order(points.points, order);
     TriangulateOptions options;
     options.locate = locate;
-    LoggingCounter observer(true);
+    // Batches of 97 created tetrahedra: counts cross many batch boundaries, and tetrahedra are
+    // deleted both before and after their batch is counted.
+    LoggingCounter observer(true, 97);
     const Triangulation tri = triangulate_observed(points, sequence.sequence, options, observer);
     if (brute != nullptr) {
         *brute = brute_force(observer);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -48,7 +49,13 @@ public:
     /// Exact bins of the j histogram; larger j are summed into the last bin.
     static constexpr std::size_t kHistogramBins = 4097;
 
-    explicit ConflictCountingObserver(bool keep_steps = false) : keep_steps_(keep_steps) {}
+    /// Created tetrahedra counted together (a batch of 2^20 takes about 30 MB).
+    static constexpr std::size_t kDefaultBatch = std::size_t{1} << 20;
+
+    /// `batch`: how many created tetrahedra wait to be counted together; the counts do not depend
+    /// on it (tests make it small to cross batch boundaries often).
+    explicit ConflictCountingObserver(bool keep_steps = false, std::size_t batch = kDefaultBatch)
+        : keep_steps_(keep_steps), batch_(std::max<std::size_t>(batch, 1)) {}
 
     void on_start(const Geometry& geometry);
     void on_tet_created(TetId t, const TetVertices& v, std::uint64_t step);
@@ -74,7 +81,6 @@ private:
     };
 
     static constexpr std::uint32_t kAlive = 0xFFFF'FFFFu;
-    static constexpr std::size_t kBatch = std::size_t{1} << 20;
 
     std::uint64_t count_solid(const TetVertices& v);
     std::uint64_t count_ghost(const TetVertices& v);
@@ -83,6 +89,7 @@ private:
     std::uint64_t curve_key(const TetVertices& v) const;
 
     bool keep_steps_;
+    std::size_t batch_;
     const Geometry* geometry_ = nullptr;
     std::unique_ptr<PointKdTree> tree_;
     double max_weight_ = 0;
