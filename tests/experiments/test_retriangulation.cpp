@@ -202,8 +202,14 @@ TEST(Retriangulation, CdtPolygonsStayBelowPropositions55And56) {
         }
     }
     // The nested boxes cut through the Delaunay triangulation of their points: something flips.
-    EXPECT_GT(value(run.rows[2], "flips"), 0);
-    EXPECT_GT(value(run.rows[3], "flips"), 0);
+    std::size_t boxes = 0;
+    for (const Row& row : run.rows) {
+        if (row.at("dist") == "nested-boxes") {
+            ++boxes;
+            EXPECT_GT(value(row, "flips"), 0) << "n = " << row.at("n");
+        }
+    }
+    EXPECT_EQ(boxes, 2u);
 }
 
 TEST(PlcFamilies, ValidReproducibleAndAboutNPoints) {
