@@ -224,7 +224,7 @@ namespace {
 // PointKdTree::count certifies whole boxes: the points it counts whole plus those it visits and
 // finds inside must be exactly the points inside, for regions that do and do not cover boxes.
 TEST(PointKdTree, CountingWholeBoxesMissesAndRepeatsNothing) {
-    const PointSet points = generate_points("cube", 5000, 11);
+    const PointSet points = generate_points("cube", 50000, 11);
     const PointKdTree tree(points.points);
     for (const double half : {0.02, 0.1, 0.3, 0.7}) {
         const Box3 region{{0.5 - half, 0.4 - half, 0.6 - half},

@@ -20,7 +20,7 @@ struct Box3 {
 /// splits on the longest side, leaves of at most kLeafSize points); 36 bytes per point.
 class PointKdTree {
 public:
-    static constexpr std::uint32_t kLeafSize = 8;
+    static constexpr std::uint32_t kLeafSize = 32;
 
     /// Point ids are positions in `points`; the tree keeps its own copy of the points, in leaf
     /// order for locality. \throws Error for 2^32 points or more.
