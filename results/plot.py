@@ -14,7 +14,8 @@ from collections import defaultdict
 import matplotlib
 
 # The estimators the report's text uses, so plots and text cannot disagree.
-from report import Z95, brio_estimates, fit_limit, fit_log, seed_bootstrap, walk_rounds
+from report import (Z95, brio_estimates, fit_limit, fit_log, seed_bootstrap, timed_engine,
+                    walk_rounds)
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -241,7 +242,8 @@ def plot_scaling(inp, out, md):
     n = np.array([1e3, 1e5])
     axes[1].loglog(n, 1e-6 * n * np.log(n) / np.log(1e3), "k:", label=r"$\propto n \log n$")
     axes[1].set(xlabel="n", ylabel="seconds",
-                title="time of the counting engine (log–log, fitted slopes;\nnoisy under load)")
+                title=f"time of the {timed_engine(inp, 'scaling')} engine (log–log, fitted slopes;\n"
+                      "noisy under load)")
     plot_conflicts(axes[2], rows, md)
     finish(fig, axes, out, "scaling", md, legend_size=6)
 

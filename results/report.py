@@ -412,6 +412,14 @@ def brio_ratio_text(inp, suite="creation"):
     return found.group(1) if found else "0.5"
 
 
+def timed_engine(inp, suite):
+    """Which engine a runs table timed: 'uninstrumented' (the one users run) or 'counting'
+    (tables written before the timing run was split off, and suites that count conflicts)."""
+    meta = os.path.join(inp, f"{suite}.meta.json")
+    found = re.search(r'"timed_engine":\s*"(\w+)"', open(meta).read()) if os.path.exists(meta) else None
+    return found.group(1) if found else "counting"
+
+
 def scaling_section(inp):
     rows = read(os.path.join(inp, "scaling.csv"))
     if rows is None or "conflicts" not in rows[0]:
@@ -483,8 +491,8 @@ def scaling_section(inp):
                        + ("within 20 % of" if close else "not within 20 % of")
                        + f" Theorem 5.4's {CONFLICT_SLOPE:.1f}; with {len(seeds)} seeds and "
                        f"{len(ns)} sizes this is a consistency check; the `theorem` suite below "
-                       "fits the slope with confidence intervals. Times are of the counting engine "
-                       "under load and carry no verdict.")
+                       f"fits the slope with confidence intervals. Times are of the {timed_engine(inp, 'scaling')} "
+                       "engine, under load, and carry no verdict.")
     return "\n".join(out)
 
 

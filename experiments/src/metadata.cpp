@@ -104,6 +104,10 @@ std::string metadata_json(const Suite& suite,
     field("brio_ratio", ratio, false);
     field("count_conflicts", suite.count_conflicts ? "true" : "false", false);
     field("bootstrap", suite.bootstrap_first ? "first" : "widest", true);
+    if (suite.kind == SuiteKind::kRuns || suite.kind == SuiteKind::kDegenerate) {
+        // What time_s and peak_rss_bytes measure (measure_triangulation.cpp).
+        field("timed_engine", suite.count_conflicts ? "counting" : "uninstrumented", true);
+    }
     if (suite.kind == SuiteKind::kDeletion) {
         field("deletions", std::to_string(settings.deletions), false);
         field("deletion_seed_offset", "2000", false);
