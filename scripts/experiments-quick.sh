@@ -8,10 +8,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${1:-build/release}"
-if [[ ! -x "$build/cli/cavity" ]]; then
+if [[ ! -f "$build/CMakeCache.txt" ]]; then
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
-  cmake --build "$build" -j2 --target cavity
 fi
+# Always brought up to date: tables written by a stale program would name the wrong commit.
+cmake --build "$build" -j2 --target cavity
 out=results/experiments/quick
 paper=results/experiments/paper  # the paper tier's tables, when committed (see results/README.md)
 start=$(date +%s)
