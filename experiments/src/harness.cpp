@@ -261,6 +261,10 @@ HarnessResult run_experiment(const HarnessOptions& options) {
     for (const RunSpec& run : runs) {
         missing_rows += rows.count(join(key_values(run))) == 0 ? 1 : 0;
     }
+    if (options.partial && rows.empty()) {
+        throw Error(suite.name + ": nothing to merge: no run of this tier is measured in " +
+                    options.out_dir.string());
+    }
     if ((missing_parts != 0 || missing_rows != 0) && !(options.merge_only && options.partial)) {
         if (options.merge_only) {
             throw Error(suite.name + ": cannot merge: " + std::to_string(missing_parts) +

@@ -91,6 +91,10 @@ TEST_F(Harness, APartialMergeResumesIntoTheWholeTable) {
     o.merge_only = true;
     EXPECT_THROW(run_experiment(o), core::Error);  // a plain merge refuses missing runs
     o.partial = true;
+    HarnessOptions empty = options("tiny", "nothing");
+    empty.merge_only = true;
+    empty.partial = true;
+    EXPECT_THROW(run_experiment(empty), core::Error);  // nothing measured: nothing to merge
     const HarnessResult merged = run_experiment(o);
     EXPECT_TRUE(merged.merged);
     EXPECT_EQ(stable_columns(dir_ / "long" / "tiny.csv").size(), first.runs_done);
