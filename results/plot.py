@@ -14,8 +14,8 @@ from collections import defaultdict
 import matplotlib
 
 # The estimators the report's text uses, so plots and text cannot disagree.
-from report import (Z95, brio_estimates, fit_limit, fit_log, seed_bootstrap, timed_engine,
-                    walk_rounds)
+from report import (Z95, brio_estimates, fit_limit, fit_log, fit_sizes, seed_bootstrap,
+                    timed_engine, walk_rounds)
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -702,14 +702,15 @@ def plot_theorem(inp, out, md, paper=None):
                              color=colour, ls=ls, marker="os^v"[k % 4], ms=3, capsize=2,
                              label=f"{dist}, {'created' if key.startswith('created') else 'deleted'}")
         conflicts = by["conflicts_per_point"]
-        if len(conflicts) >= 4 and min(len(v) for v in conflicts.values()) >= 2:
-            a, b, c = fit_log(conflicts)
+        fitted = fit_sizes(conflicts)
+        if fitted:
+            a, b, c = fit_log({n: conflicts[n] for n in fitted})
             n = np.geomspace(min(conflicts), max(conflicts))
             axes[0].plot(n, a * np.log(n) + b + c * n ** (-1 / 3), color=colour, lw=0.8, ls=":",
                          label=f"{dist} fit: {a:.1f} ln n {b:+.0f} {c:+.0f} n^(-1/3)")
-            for key, limit in (("created_per_point", CREATED_PER_POINT), ("deleted_per_point", DELETED_PER_POINT)):
-                A, B = fit_limit(by[key])
-                axes[1].plot(n, A + B * n ** (-1 / 3), color=colour, lw=0.6, ls=":")
+            for key in ("created_per_point", "deleted_per_point"):
+                A, B, C = fit_limit({m: by[key][m] for m in fitted})
+                axes[1].plot(n, A + B * n ** (-1 / 3) + C * n ** (-2 / 3), color=colour, lw=0.6, ls=":")
     ns_all = sorted({int(r["points"]) for r in rows})
     n = np.geomspace(ns_all[0], ns_all[-1])
     axes[0].plot(n, CONFLICT_SLOPE * (np.log(n) + POISSON_CONFLICT_OFFSET), "k--", lw=1,
@@ -719,7 +720,7 @@ def plot_theorem(inp, out, md, paper=None):
     axes[1].axhline(CREATED_PER_POINT, color="k", lw=1, label=f"created limit {CREATED_PER_POINT:.2f}")
     axes[1].axhline(DELETED_PER_POINT, color="k", lw=1, ls="--", label=f"deleted limit {DELETED_PER_POINT:.2f}")
     axes[1].set(xscale="log", xlabel="n", ylabel="tetrahedra per point",
-                title="tetrahedra created and deleted per point\n(dotted: fits A + B n^(-1/3))")
+                title="tetrahedra created and deleted per point\n(dotted: fits A + B n^(-1/3) + C n^(-2/3))")
     locate = ", ".join(sorted({r["locate"] for r in rows}))
     axes[2].set(xscale="log", xlabel="n", ylabel="location steps per point",
                 title=f"point location's work per point ({locate})\nwalk steps or points moved between cells")

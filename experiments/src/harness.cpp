@@ -263,7 +263,8 @@ HarnessResult run_experiment(const HarnessOptions& options) {
     }
     if (options.partial && rows.empty()) {
         throw Error(suite.name + ": nothing to merge: no run of this tier is measured in " +
-                    options.out_dir.string());
+                    options.out_dir.string() + " by " + std::to_string(options.shard_count) +
+                    " shard(s) (--shard i/N gives the count N the parts were run with)");
     }
     if ((missing_parts != 0 || missing_rows != 0) && !(options.merge_only && options.partial)) {
         if (options.merge_only) {
