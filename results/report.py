@@ -903,16 +903,6 @@ def peers_section(inp):
     return "\n".join(out)
 
 
-def fitted_slope(xs, ys):
-    """Least-squares slope of ln y against ln x (pairs with positive y)."""
-    pts = [(math.log(x), math.log(y)) for x, y in zip(xs, ys) if x > 0 and y > 0]
-    if len({x for x, _ in pts}) < 2:
-        return float("nan")
-    mx = mean([x for x, _ in pts])
-    my = mean([y for _, y in pts])
-    return sum((x - mx) * (y - my) for x, y in pts) / sum((x - mx) ** 2 for x, _ in pts)
-
-
 def span(values, digits=2):
     lo, hi = min(values), max(values)
     return f"{lo:.{digits}f}" if f"{lo:.{digits}f}" == f"{hi:.{digits}f}" else f"{lo:.{digits}f}–{hi:.{digits}f}"
@@ -933,7 +923,7 @@ def giftwrap_section(inp):
         parts.append(f"{span([float(r['apex_per_nh']) for r in rs], 3)} ({dist})")
         xs = [int(r["points"]) for r in rs]
         for key in ("apex_orient_tests", "gw_s", "bw_s"):
-            slopes[key].append(fitted_slope(xs, [float(r[key]) for r in rs]))
+            slopes[key].append(loglog_slope(xs, [float(r[key]) for r in rs]))
     out.append(f"Apex orient3d tests / (n h): {', '.join(parts)}; insphere calls "
                f"{span([float(r['insphere_per_nh']) for r in rows])} n h. Fitted slopes against n: apex "
                f"tests {span(slopes['apex_orient_tests'])}, gift-wrapping time {span(slopes['gw_s'])}, "
@@ -980,7 +970,7 @@ def deletion_section(inp):
     exponents, low, high = [], [], []
     for dist in dists:
         js = [r for r in jrows if r["dist"] == dist and int(r["degree"]) >= 4]
-        exponents.append(fitted_slope([int(r["degree"]) for r in js],
+        exponents.append(loglog_slope([int(r["degree"]) for r in js],
                                       [float(r["apex_orient_tests"]) for r in js]))
         low += [float(r["facets_wrapped"]) / int(r["degree"]) for r in js if int(r["degree"]) <= 10]
         high += [float(r["facets_wrapped"]) / int(r["degree"]) for r in js if int(r["degree"]) >= 18]
@@ -1026,7 +1016,7 @@ def cdt_section(inp):
     for family in families:
         ps = [r for r in polys if r["dist"] == family and int(r["flips"]) > 0 and int(r["m"]) > 1]
         if len({r["m"] for r in ps}) > 2:
-            slopes.append(f"m^{fitted_slope([int(r['m']) for r in ps], [int(r['flips']) for r in ps]):.2f} "
+            slopes.append(f"m^{loglog_slope([int(r['m']) for r in ps], [int(r['flips']) for r in ps]):.2f} "
                           f"({family}, m ≤ {max(int(r['m']) for r in ps)})")
     if slopes:
         out.append("Per polygon, flips grow like " + ", ".join(slopes) + ".")
@@ -1037,7 +1027,7 @@ def cdt_section(inp):
     fam_slopes = []
     for family in families:
         rs = [r for r in runs if r["dist"] == family and int(r["points"]) >= 250]
-        fam_slopes.append(f"{family} {fitted_slope([int(r['vertices']) for r in rs], [int(r['flips']) for r in rs]):.2f}")
+        fam_slopes.append(f"{family} {loglog_slope([int(r['vertices']) for r in rs], [int(r['flips']) for r in rs]):.2f}")
     search = {family: [float(r["search_per_region_tet"]) for r in runs if r["dist"] == family
                        and r["search_per_region_tet"] not in ("-", "0", "inf", "nan")] for family in families}
     validated = [r for r in runs + valid_runs if r.get("valid") == "1"]

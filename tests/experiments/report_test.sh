@@ -8,6 +8,8 @@ report="$1"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# expect PATTERN WHAT: the rewritten README.md has a line matching PATTERN, else WHAT failed.
+expect() { grep -q "$1" README.md || fail "$2: $(grep -m1 -F "${3:-$1}" README.md)"; }
 failures=0
 cd "$work"
 mkdir in
@@ -62,14 +64,11 @@ grep -q "differ from the exact expectations beyond their 95 % intervals in 1 of 
 # (400 - 200) / ln 10 = 86.9 per unit of ln n
 grep -q "| cube | random | 200.0 \[200.0–200.0\] | 400.0 \[400.0–400.0\] | 86.9 |" README.md ||
   fail "scaling row: $(grep '| cube | random' README.md)"
-grep -q "contains Theorem 5.4's 81.21 in its interval for cube\." README.md ||
-  fail "theorem verdict: $(grep 'Verdict (computed). The slope' README.md)"
-grep -q "The limits of created and deleted per point contain the Poisson constants for cube\." README.md ||
-  fail "theorem limits: $(grep 'limits of created' README.md)"
-grep -q "| cube (n = 1000…10000000) | 81.2 \\[" README.md ||
-  fail "theorem fit row: $(grep '^| cube (n' README.md)"
-grep -q "took 2 min 0 s wall.*load average of 1.5–2.5.*jtets 61 s, creation 59 s" README.md ||
-  fail "cost: $(grep 'Cost (generated)' README.md)"
+expect "contains Theorem 5.4's 81.21 in its interval for cube\." "theorem verdict" "The slope"
+expect "The limits of created and deleted per point contain the Poisson constants for cube\." \
+  "theorem limits" "limits of created"
+expect "| cube (n = 1000…10000000) | 81.2 \\[" "theorem fit row" "| cube (n"
+expect "took 2 min 0 s wall.*load average of 1.5–2.5.*jtets 61 s, creation 59 s" "cost" "Cost (generated)"
 printf '# no markers\n' > plain.md
 /usr/bin/python3 "$report" in plain.md 2>/dev/null && fail "a README without markers was accepted"
 if [ "$failures" -ne 0 ]; then

@@ -124,10 +124,12 @@ void run(const Prepared& prep,
     }
 }
 
-/// Walking from the most recently created solid tetrahedron (§5.5).
-class WalkLocator {
+/// Point location by a walk from the most recently created solid tetrahedron (§5.5): `Walker` is
+/// the visibility walk (walk.h) or the book's straight-line walk (straight_walk.h).
+template <class Walker>
+class WalkingLocator {
 public:
-    explicit WalkLocator(std::uint64_t seed) : walk_(seed) {}
+    explicit WalkingLocator(std::uint64_t seed) : walk_(seed) {}
 
     template <class Engine>
     void start(Engine&) {}
@@ -144,31 +146,11 @@ public:
     void after_insertion(Engine&, VertexId) {}
 
 private:
-    Walk walk_;
+    Walker walk_;
 };
 
-/// The book's straight-line walk from the most recently created solid tetrahedron (§5.5).
-class StraightWalkLocator {
-public:
-    explicit StraightWalkLocator(std::uint64_t seed) : walk_(seed) {}
-
-    template <class Engine>
-    void start(Engine&) {}
-
-    template <class Engine>
-    TetId locate(Engine& engine, VertexId u) {
-        return walk_.locate(engine, engine.geometry().point(u), engine.last_solid());
-    }
-
-    template <class Engine>
-    void skip(Engine&, VertexId) {}
-
-    template <class Engine>
-    void after_insertion(Engine&, VertexId) {}
-
-private:
-    StraightWalk walk_;
-};
+using WalkLocator = WalkingLocator<Walk>;
+using StraightWalkLocator = WalkingLocator<StraightWalk>;
 
 template <class Storage, class Observer>
 void dispatch_locator(const Prepared& prep,
