@@ -103,10 +103,17 @@ std::string metadata_json(const Suite& suite,
     std::snprintf(ratio, sizeof ratio, "%.17g", suite.brio_ratio);
     field("brio_ratio", ratio, false);
     field("count_conflicts", suite.count_conflicts ? "true" : "false", false);
-    field("bootstrap", suite.bootstrap_first ? "first" : "widest", true);
+    // The creation, hj and extend kinds always start from the order's own first four points.
+    const bool own_first = suite.kind == SuiteKind::kCreation || suite.kind == SuiteKind::kHj ||
+                           suite.kind == SuiteKind::kExtend;
+    field("bootstrap", suite.bootstrap_first || own_first ? "first" : "widest", true);
     if (suite.kind == SuiteKind::kRuns || suite.kind == SuiteKind::kDegenerate) {
         // What time_s and peak_rss_bytes measure (measure_triangulation.cpp).
         field("timed_engine", suite.count_conflicts ? "counting" : "uninstrumented", true);
+    }
+    if (suite.kind == SuiteKind::kExtend) {
+        field("added", list(settings.added), false);
+        field("orders", std::to_string(settings.orders), false);
     }
     if (suite.kind == SuiteKind::kDeletion) {
         field("deletions", std::to_string(settings.deletions), false);

@@ -64,6 +64,11 @@ double run_cost(const Suite& suite, const TierSettings& tier, const RunSpec& run
         case SuiteKind::kGiftWrap: return n * n * 0.1;  // O(nh) apex tests
         case SuiteKind::kDeletion: return n * 3 + static_cast<double>(tier.deletions) * 100;
         case SuiteKind::kCdt: return n * n * 0.01;  // region scans: O(h) per polygon
+        case SuiteKind::kExtend:  // Exercise 2's bound t^2 + t s^2 for the largest T, per order
+            return static_cast<double>(tier.orders) *
+                   (tier.added.empty() ? n
+                                       : static_cast<double>(tier.added.back()) *
+                                             (static_cast<double>(tier.added.back()) + n * n));
         case SuiteKind::kRuns: break;
     }
     return n * (suite.validates(run.n) ? 10 : 1);
@@ -81,6 +86,8 @@ std::vector<std::string> metric_columns(SuiteKind kind) {
         case SuiteKind::kGiftWrap: return measure::giftwrap_columns();
         case SuiteKind::kDeletion: return measure::deletion_columns();
         case SuiteKind::kCdt: return measure::cdt_columns();
+        case SuiteKind::kExtend:
+            return measure::extend_columns();
         case SuiteKind::kRuns:
         case SuiteKind::kDegenerate: break;
     }
@@ -95,6 +102,8 @@ std::vector<std::string> j_columns(SuiteKind kind) {
             return measure::hj_j_columns();
         case SuiteKind::kDeletion: return measure::deletion_j_columns();
         case SuiteKind::kCdt: return measure::cdt_j_columns();
+        case SuiteKind::kExtend:
+            return measure::extend_j_columns();
         case SuiteKind::kGiftWrap:
         case SuiteKind::kPeers:
         case SuiteKind::kLocality:
@@ -116,6 +125,8 @@ RunOutput execute_run(const Suite& suite, const TierSettings& tier, const RunSpe
         case SuiteKind::kGiftWrap: return measure::giftwrap(suite, run);
         case SuiteKind::kDeletion: return measure::deletion(suite, tier, run);
         case SuiteKind::kCdt: return measure::cdt(suite, run);
+        case SuiteKind::kExtend:
+            return measure::extend(suite, tier, run);
         case SuiteKind::kRuns:
         case SuiteKind::kDegenerate: break;
     }

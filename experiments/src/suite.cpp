@@ -105,7 +105,8 @@ SuiteKind parse_kind(const LineReader& reader, const std::string& word) {
                                     SuiteKind::kDeletion,
                                     SuiteKind::kCdt,
                                     SuiteKind::kHj,
-                                    SuiteKind::kLocality};
+                                    SuiteKind::kLocality,
+                                    SuiteKind::kExtend};
     for (SuiteKind kind : kKinds) {
         if (word == suite_kind_name(kind)) {
             return kind;
@@ -113,7 +114,8 @@ SuiteKind parse_kind(const LineReader& reader, const std::string& word) {
     }
     reader.fail(
         "unknown kind '" + word +
-        "' (runs, jtets, creation, degenerate, peers, giftwrap, deletion, cdt, hj or locality)");
+        "' (runs, jtets, creation, degenerate, peers, giftwrap, deletion, cdt, hj, locality or "
+        "extend)");
 }
 
 void check_distribution(const std::string& name) {
@@ -166,6 +168,8 @@ std::string_view suite_kind_name(SuiteKind kind) {
             return "hj";
         case SuiteKind::kLocality:
             return "locality";
+        case SuiteKind::kExtend:
+            return "extend";
         case SuiteKind::kDegenerate: return "degenerate";
         case SuiteKind::kPeers: return "peers";
         case SuiteKind::kGiftWrap: return "giftwrap";
@@ -273,6 +277,8 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
             if (orders_of->orders == 0) {
                 reader.fail("orders must be positive");
             }
+        } else if (TierSettings* added_of = tier_of_key(suite, key, "added.")) {
+            added_of->added = reader.integers(words);
         } else if (TierSettings* deletions_of = tier_of_key(suite, key, "deletions.")) {
             deletions_of->deletions = reader.integer(single());
         } else if (key == "bootstrap") {
@@ -320,6 +326,12 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
         if (std::find(t->sizes.begin(), t->sizes.end(), 0u) != t->sizes.end()) {
             throw Error(located_message(file, std::nullopt, "a size of 0 points"));
         }
+    }
+    if (suite.kind == SuiteKind::kExtend &&
+        (suite.quick.added.empty() || suite.full.added.empty() ||
+         (!suite.paper.sizes.empty() && suite.paper.added.empty()))) {
+        throw Error(
+            located_message(file, std::nullopt, "an extend suite needs added.TIER for every tier"));
     }
     if (!validate_given) {
         suite.validate = suite.kind == SuiteKind::kDegenerate || suite.kind == SuiteKind::kCdt;

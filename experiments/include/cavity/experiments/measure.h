@@ -1,5 +1,6 @@
 #pragma once
 
+#include "cavity/core/point_set.h"
 #include "cavity/experiments/run.h"
 
 /// The measurements of each suite kind (one file each); execute_run dispatches to them.
@@ -61,5 +62,16 @@ std::vector<std::string> deletion_j_columns();
 RunOutput cdt(const Suite& suite, const RunSpec& run);
 std::vector<std::string> cdt_columns();
 std::vector<std::string> cdt_j_columns();
+
+/// Exercise 2: Del S given (S from the run's distribution, n points), t points T uniform in
+/// S's bounding box inserted in a uniform order with the conflict graph; per size of T
+/// (`added`), the tier's number of orders: tetrahedra and conflicts created while inserting T,
+/// the conflict graph of Del S, and the same points built from scratch in a uniform order.
+RunOutput extend(const Suite& suite, const TierSettings& tier, const RunSpec& run);
+std::vector<std::string> extend_columns();
+/// The extend kind's point set: S (input indices 0..s-1) and then t points uniform in S's
+/// bounding box, drawn from `seed` (the run's seed).
+core::PointSet extend_points(const core::PointSet& s_points, std::uint64_t t, std::uint64_t seed);
+std::vector<std::string> extend_j_columns();
 
 }  // namespace cavity::experiments::measure

@@ -12,7 +12,8 @@
 /// Suite files are line based: `key value value ...`, `#` starts a comment, blank lines are
 /// ignored. Keys (each at most once):
 ///   question  TEXT                      what the suite checks (required)
-///   kind      runs|jtets|creation|degenerate|peers|giftwrap|deletion|cdt|hj|locality (required)
+///   kind      runs|jtets|creation|degenerate|peers|giftwrap|deletion|cdt|hj|locality|extend
+///                                       (required)
 ///   dist      NAME...                   generate_points distributions; for cdt, PLC families
 ///                                       (plc_families.h) (required)
 ///   n.quick   N...   n.full N...        sizes per tier (required)
@@ -31,6 +32,8 @@
 ///   (order names: brio:R is BRIO with ratio R, e.g. brio:0.125, whatever brio-ratio says)
 ///   deletions.quick K deletions.full K  deletion: vertices deleted per run (default 100; at
 ///                                       most half the points)
+///   added.quick T... added.full T...    extend: sizes t of the point set T inserted into Del S
+///                                       (S is the run's n points; required for extend)
 ///   validate  yes|no|N                  check every output exactly (default: yes for degenerate
 ///                                       and cdt); N: only the runs of at most N points
 ///   cap       DIST N                    leave out the sizes above N for DIST (a generator's
@@ -48,7 +51,8 @@ enum class SuiteKind {
     kDeletion,
     kCdt,
     kHj,
-    kLocality
+    kLocality,
+    kExtend
 };
 
 std::string_view suite_kind_name(SuiteKind kind);
@@ -58,6 +62,7 @@ struct TierSettings {
     std::vector<std::uint64_t> seeds;
     std::uint64_t orders = 100;
     std::uint64_t deletions = 100;
+    std::vector<std::uint64_t> added;  ///< extend: the sizes of T
 };
 
 struct Suite {
