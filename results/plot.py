@@ -14,8 +14,11 @@ from collections import defaultdict
 import matplotlib
 
 # The estimators the report's text uses, so plots and text cannot disagree.
-from report import (Z95, brio_estimates, creation_dir, extend_table, fit_limit, fit_log,
-                    fit_sizes, seed_bootstrap, timed_engine, walk_rounds)
+from reporting.common import Z95, seed_bootstrap
+from reporting.exercises import extend_table
+from reporting.propositions import brio_estimates, creation_dir
+from reporting.theorem import fit_limit, fit_log, fit_sizes, timed_engine
+from reporting.walking import walk_rounds
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402

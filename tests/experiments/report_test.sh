@@ -41,6 +41,20 @@ for n in (1000, 10000, 100000, 1000000, 10000000):
               f"0,{3 * n},{40 * n},0,0")
 PY
 printf 'suite,wall_s,load_average\njtets,61,1.5\ncreation,59,2.5\n' > in/cost.csv
+# Exercise 2: on cube the work / (t² + t s²) falls to 0.05 at the largest s, on moment it rises
+# to 0.2 (so the bound is not confirmed there); T after S costs 2× the cube's build from scratch.
+/usr/bin/python3 - > in/extend.j.csv <<'PY'
+print("dist,n,order,locate,storage,seed,t,orders,created_mean,created_sd,deleted_mean,"
+      "conflicts_mean,conflicts_sd,initial_conflicts_mean,first_deleted_mean,max_cavity_mean,"
+      "scratch_created_mean,scratch_conflicts_mean,scratch_conflicts_sd")
+for dist, ratios, scratch_share in (("cube", {20: 0.05}, 0.5), ("moment", {20: 0.2}, 1.0)):
+    for s in (10, 20):
+        for t in (10, 40):
+            ratio = ratios.get(s, 0.1) if (s, t) == (20, 40) or s == 10 else 0.1
+            work = ratio * (t * t + t * s * s)
+            print(f"{dist},{s},random,-,-,1,{t},10,10,1,5,{work - 10},4,{t},3,4,0,"
+                  f"{work * scratch_share},1")
+PY
 cat > README.md <<'MD'
 # kept
 <!-- BEGIN GENERATED creation (results/report.py; do not edit) -->
@@ -53,6 +67,8 @@ between
 <!-- END GENERATED theorem -->
 <!-- BEGIN GENERATED cost (results/report.py; do not edit) -->
 <!-- END GENERATED cost -->
+<!-- BEGIN GENERATED extend (results/report.py; do not edit) -->
+<!-- END GENERATED extend -->
 MD
 /usr/bin/python3 "$report" in README.md || fail "report.py failed"
 grep -q "^# kept$" README.md && grep -q "^between$" README.md || fail "text outside the markers changed"
@@ -69,6 +85,11 @@ expect "The limits of created and deleted per point contain the Poisson constant
   "theorem limits" "limits of created"
 expect "| cube (n = 1000…10000000) | 81.2 \\[" "theorem fit row" "| cube (n"
 expect "took 2 min 0 s wall.*load average of 1.5–2.5.*jtets 61 s, creation 59 s" "cost" "Cost (generated)"
+expect "| moment | 20 | 40 | 10 | 3 510 ± 2 | 0.2 | 1.00 |" "extend row" "| moment | 20 | 40"
+expect "exceeds its values at smaller s for moment: the bound is not confirmed" "extend verdict" \
+  "Verdict (computed).* Consistent"
+expect "inserting T after S is 2.00× the work of the whole construction from scratch (cube, s = 20" \
+  "extend adversary" "inserting T after S"
 printf '# no markers\n' > plain.md
 /usr/bin/python3 "$report" in plain.md 2>/dev/null && fail "a README without markers was accepted"
 if [ "$failures" -ne 0 ]; then

@@ -1,0 +1,1 @@
+"""The generated sections of results/README.md (results/report.py writes them)."""
