@@ -3,16 +3,15 @@
 // the CPU seconds for order + triangulation, the tetrahedra, and peak memory when one engine runs
 // alone (--only). The ratios are made by bench/run_peers_bench.sh.
 
-#include <sys/resource.h>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <string>
+#include <vector>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
-#include <ctime>
-#include <cstdio>
-#include <cstdlib>
-#include <string>
-#include <vector>
+#include <sys/resource.h>
 
 #include "cavity/core/generate.h"
 #include "cavity/core/insertion_order.h"
@@ -46,7 +45,8 @@ Run run_cavity(const cavity::core::PointSet& points) {
     const double start = now();
     cavity::core::OrderOptions order;  // the defaults: BRIO, ratio 1/2, Hilbert within rounds
     const auto sequence = cavity::core::make_insertion_order(points.points, order).sequence;
-    const auto tri = cavity::core::triangulate(points, sequence, cavity::core::TriangulateOptions{});
+    const auto tri =
+        cavity::core::triangulate(points, sequence, cavity::core::TriangulateOptions{});
     return {now() - start, tri.tets.size()};
 }
 
@@ -80,12 +80,14 @@ int main(int argc, char** argv) {
         } else if (flag == "--only") {
             only = argv[i + 1];
         } else {
-            std::fprintf(stderr, "usage: %s [--dist D] [--n N] [--repeats R] [--only cavity|cgal]\n",
+            std::fprintf(stderr,
+                         "usage: %s [--dist D] [--n N] [--repeats R] [--only cavity|cgal]\n",
                          argv[0]);
             return 2;
         }
     }
-    const auto points = cavity::core::generate_points(distribution, n, 1, cavity::core::WeightSpec{});
+    const auto points =
+        cavity::core::generate_points(distribution, n, 1, cavity::core::WeightSpec{});
     const std::uint64_t baseline_rss = peak_rss_bytes();
     for (int r = 0; r < repeats; ++r) {
         // Alternate which engine goes first so neither always meets a cold cache.
@@ -96,8 +98,13 @@ int main(int argc, char** argv) {
                 continue;
             }
             const Run run = cavity_turn ? run_cavity(points) : run_cgal(points);
-            std::printf("%s,%zu,%s,%d,%.6f,%zu,%llu,%llu\n", distribution.c_str(), points.size(),
-                        engine, r, run.seconds, run.tets,
+            std::printf("%s,%zu,%s,%d,%.6f,%zu,%llu,%llu\n",
+                        distribution.c_str(),
+                        points.size(),
+                        engine,
+                        r,
+                        run.seconds,
+                        run.tets,
                         static_cast<unsigned long long>(only.empty() ? 0 : peak_rss_bytes()),
                         static_cast<unsigned long long>(baseline_rss));
             std::fflush(stdout);

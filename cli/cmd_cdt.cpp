@@ -165,11 +165,12 @@ void add_cdt_command(CLI::App& app) {
                     "output prefix: PREFIX.node .ele .face .vtu, and PREFIX.poly, the PLC the mesh "
                     "conforms to (with protecting and inserted vertices) for `cavity check --poly`")
         ->required();
-    cmd->add_flag("--protect",
-                  args->protect,
-                  "split PLC edges that are not Delaunay until it is edge-protected, at points lying "
-                  "exactly on them (double coordinates, near the middle; an edge with no such point "
-                  "is refused by name)");
+    cmd->add_flag(
+        "--protect",
+        args->protect,
+        "split PLC edges that are not Delaunay until it is edge-protected, at points lying "
+        "exactly on them (double coordinates, near the middle; an edge with no such point "
+        "is refused by name)");
     cmd->add_option("--insert",
                     args->insert,
                     "after the polygons, insert these points (.node, .xyz, .ply) in file order "

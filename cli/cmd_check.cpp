@@ -65,7 +65,8 @@ void run_cdt_check(const CheckArgs& args) {
     }
     if (!args.quiet) {
         std::printf("valid: constrained Delaunay tetrahedralization of %s (%zu tetrahedra)\n",
-                    args.poly.c_str(), tets.size());
+                    args.poly.c_str(),
+                    tets.size());
     }
 }
 
@@ -93,8 +94,14 @@ void run_check(const CheckArgs& args) {
         std::printf(
             "%zu points: %zu vertices, %zu edges, %zu triangles (%zu on the hull), %zu tetrahedra; "
             "%zu duplicate(s), %zu redundant\n",
-            points.size(), report.vertices, report.edges, report.triangles, report.hull_triangles,
-            report.tets, report.duplicates, report.redundant);
+            points.size(),
+            report.vertices,
+            report.edges,
+            report.triangles,
+            report.hull_triangles,
+            report.tets,
+            report.duplicates,
+            report.redundant);
     }
     if (!report.ok()) {
         std::string message = args.mesh + ": not the Delaunay triangulation of " + args.points +
@@ -121,9 +128,11 @@ void add_check_command(CLI::App& app) {
         "file; exit status 0 when valid, 1 otherwise. Tetrahedra must have positive volume by the "
         "right-hand rule, as TetGen and cavity write them");
     cmd->add_option("points", args->points, "the points (.node, .xyz, .ply)")->required();
-    cmd->add_option("mesh", args->mesh, "the tetrahedra (.ele), numbered like the points")->required();
+    cmd->add_option("mesh", args->mesh, "the tetrahedra (.ele), numbered like the points")
+        ->required();
     cmd->add_flag("--weighted", args->weighted, "weighted Delaunay (weights from the point file)");
-    cmd->add_option("--poly", args->poly,
+    cmd->add_option("--poly",
+                    args->poly,
                     "check a constrained Delaunay tetrahedralization of this PLC (TetGen .poly); "
                     "the point file must list the same points as the PLC");
     cmd->add_option("--deleted",

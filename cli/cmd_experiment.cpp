@@ -74,9 +74,14 @@ void run_experiment_command(const ExperimentArgs& args) {
     };
     const experiments::HarnessResult result = experiments::run_experiment(options);
     if (!args.quiet) {
-        std::fprintf(stderr, "\r\033[K%s: %zu runs (%zu done now, %zu resumed) -> %s%s\n",
-                     args.suite.c_str(), result.runs_total, result.runs_done, result.runs_skipped,
-                     result.csv.string().c_str(), result.merged ? "" : " (part; not merged yet)");
+        std::fprintf(stderr,
+                     "\r\033[K%s: %zu runs (%zu done now, %zu resumed) -> %s%s\n",
+                     args.suite.c_str(),
+                     result.runs_total,
+                     result.runs_done,
+                     result.runs_skipped,
+                     result.csv.string().c_str(),
+                     result.merged ? "" : " (part; not merged yet)");
     }
 }
 

@@ -94,7 +94,8 @@ void add_jtets_command(CLI::App& app) {
     cmd->add_option("points", args->input, "input points")->required();
     cmd->add_option("-o,--output", args->output, "write the CSV here instead of stdout");
     cmd->add_flag("--quiet", args->quiet, "no progress bar and no cost warning");
-    cmd->add_flag("--brute-force", args->brute_force,
+    cmd->add_flag("--brute-force",
+                  args->brute_force,
                   "count over all 4-subsets instead (O(n^5), for cross-checks)");
     cmd->callback([args] { run_jtets(*args); });
 }

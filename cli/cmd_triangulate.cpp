@@ -195,17 +195,20 @@ void write_mesh(core::AtomicFileGroup& files,
 void report_skipped(const core::PointSet& points, const core::Triangulation& tri) {
     const auto base = static_cast<std::uint64_t>(points.index_base);
     if (!tri.duplicates.empty()) {
-        std::fprintf(stderr, "cavity: %zu duplicate point(s) skipped, each mapped to its first occurrence:",
+        std::fprintf(stderr,
+                     "cavity: %zu duplicate point(s) skipped, each mapped to its first occurrence:",
                      tri.duplicates.size());
         for (std::size_t i = 0; i < tri.duplicates.size() && i < 10; ++i) {
-            std::fprintf(stderr, " %llu->%llu",
+            std::fprintf(stderr,
+                         " %llu->%llu",
                          static_cast<unsigned long long>(tri.duplicates[i][0] + base),
                          static_cast<unsigned long long>(tri.duplicates[i][1] + base));
         }
         std::fprintf(stderr, "%s\n", tri.duplicates.size() > 10 ? " ..." : "");
     }
     if (!tri.redundant.empty()) {
-        std::fprintf(stderr, "cavity: %zu redundant (submerged) weighted point(s), not vertices:",
+        std::fprintf(stderr,
+                     "cavity: %zu redundant (submerged) weighted point(s), not vertices:",
                      tri.redundant.size());
         for (std::size_t i = 0; i < tri.redundant.size() && i < 10; ++i) {
             std::fprintf(stderr, " %llu", static_cast<unsigned long long>(tri.redundant[i] + base));
@@ -316,8 +319,12 @@ void run_triangulate(const TriangulateArgs& args) {
     });
     if (!args.quiet) {
         std::printf("%zu points -> %zu tetrahedra, %zu hull triangles%s in %.3f s (order %.3f s)\n",
-                    points.size(), tri.tets.size(), tri.hull_triangles, args.check ? ", valid," : "",
-                    timings.triangulate_s, timings.order_s);
+                    points.size(),
+                    tri.tets.size(),
+                    tri.hull_triangles,
+                    args.check ? ", valid," : "",
+                    timings.triangulate_s,
+                    timings.order_s);
         if (args.conflicts_counted()) {
             const core::Counters& c = tri.counters;
             std::printf(
@@ -412,9 +419,11 @@ void add_triangulate_command(CLI::App& app) {
                     "BRIO: fraction of the points carried into the earlier rounds, in [0, 1) "
                     "(Amenta-Choi-Rote's, CGAL's and geogram's convention: 1/8 there)")
         ->capture_default_str();
-    cmd->add_flag("--no-reverse-rounds", args->no_reverse_rounds,
+    cmd->add_flag("--no-reverse-rounds",
+                  args->no_reverse_rounds,
                   "BRIO: do not reverse the curve order on alternate rounds");
-    cmd->add_flag("--weighted", args->weighted,
+    cmd->add_flag("--weighted",
+                  args->weighted,
                   "weighted Delaunay: the first .node attribute (or 4th column) is the weight");
     cmd->add_option(
            "--delete",
@@ -430,8 +439,8 @@ void add_triangulate_command(CLI::App& app) {
                   "count every created tetrahedron's conflicts exactly (Theorem 5.4's sum of j; "
                   "about one exact test per conflict, ~81 n ln n for uniform points) and report "
                   "them in the summary and --stats");
-    cmd->add_option("--stats", args->stats,
-                    "write timings, counts and instrumentation counters as JSON");
+    cmd->add_option(
+        "--stats", args->stats, "write timings, counts and instrumentation counters as JSON");
     cmd->add_flag("--quiet", args->quiet, "no progress bar or summary");
     cmd->add_option("--format", args->format, "output format")
         ->check(CLI::IsMember({"tetgen", "vtu"}))

@@ -3,7 +3,8 @@
 #include <CLI/CLI.hpp>
 
 /// Each subcommand registers itself on the root app. A subcommand's callback throws
-/// cavity::core::Error (or CLI11's errors) on failure; main turns those into a message and an exit status (exit_codes.h).
+/// cavity::core::Error (or CLI11's errors) on failure; main turns those into a message and an exit
+/// status (exit_codes.h).
 namespace cavity::cli {
 
 void add_sign_command(CLI::App& app);

@@ -1,9 +1,9 @@
 #include "progress_bar.h"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <utility>
+
+#include <unistd.h>
 
 namespace cavity::cli {
 
@@ -56,8 +56,13 @@ void ProgressBar::update(std::size_t done, std::size_t total) {
     const int filled = static_cast<int>(fraction * kWidth);
     std::string bar(static_cast<std::size_t>(filled), '=');
     bar.resize(kWidth, ' ');
-    std::fprintf(stderr, "\r%s [%s] %3d%%  %.1f s, ETA %.1f s", label_.c_str(), bar.c_str(),
-                 static_cast<int>(fraction * 100.0), elapsed, eta);
+    std::fprintf(stderr,
+                 "\r%s [%s] %3d%%  %.1f s, ETA %.1f s",
+                 label_.c_str(),
+                 bar.c_str(),
+                 static_cast<int>(fraction * 100.0),
+                 elapsed,
+                 eta);
     std::fflush(stderr);
     drawn_ = true;
 }

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  cmake ninja-build g++ clang libclang-rt-14-dev
+  cmake ninja-build g++ clang clang-format libclang-rt-14-dev
   libgmp-dev libboost-dev libcli11-dev
   libgtest-dev libbenchmark-dev libcgal-dev
   python3-matplotlib tetgen pybind11-dev python3-dev python3-numpy python3-pytest python3-scipy

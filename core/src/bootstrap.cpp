@@ -16,14 +16,18 @@ using predicates::Sign;
 
 namespace {
 
-bool same_point(const Point3& a, const Point3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+bool same_point(const Point3& a, const Point3& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
 
 // The 2D orientation of the projections onto one coordinate plane, through orient3d: with the
 // fourth point one unit above a plane holding the other three, orient3d is minus their 2D
 // orientation. Exact like orient3d, for every finite double.
 Sign orient2d_projected(const Point3& a, const Point3& b, const Point3& c, int drop) {
     const auto project = [drop](const Point3& p) {
-        return drop == 0 ? Point3{p.y, p.z, 0.0} : drop == 1 ? Point3{p.z, p.x, 0.0} : Point3{p.x, p.y, 0.0};
+        return drop == 0   ? Point3{p.y, p.z, 0.0}
+               : drop == 1 ? Point3{p.z, p.x, 0.0}
+                           : Point3{p.x, p.y, 0.0};
     };
     return predicates::orient3d(project(a), project(b), project(c), Point3{0.0, 0.0, 1.0});
 }
@@ -63,7 +67,9 @@ Point3 cross(const Point3& a, const Point3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
-double dot(const Point3& a, const Point3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+double dot(const Point3& a, const Point3& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
 // How many candidates past the first valid one are weighed for shape.
 constexpr std::size_t kShapeCandidates = 64;

@@ -17,7 +17,9 @@ Triangle sorted(Triangle t) {
     return t;
 }
 
-std::string name(VertexId v) { return v == kGhostVertex ? "g" : std::to_string(v); }
+std::string name(VertexId v) {
+    return v == kGhostVertex ? "g" : std::to_string(v);
+}
 
 std::string tet_name(const TetVertices& t) {
     return "(" + name(t[0]) + " " + name(t[1]) + " " + name(t[2]) + " " + name(t[3]) + ")";
@@ -123,7 +125,8 @@ std::vector<std::string> check_complex(const ArrayStorage& storage, const Geomet
         for (int f = 0; f < 4; ++f) {
             const HalfFacet h = storage.adjacent(t, f);
             if (h == kNoHalfFacet) {
-                problems.push_back("facet " + std::to_string(f) + " of " + tet_name(v) + " is not glued");
+                problems.push_back("facet " + std::to_string(f) + " of " + tet_name(v) +
+                                   " is not glued");
                 continue;
             }
             if (storage.adjacent(tet_of(h), facet_of(h)) != half_facet(t, f)) {

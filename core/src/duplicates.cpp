@@ -6,7 +6,9 @@ namespace cavity::core {
 
 namespace {
 
-std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x + 0.0); }  // -0.0 -> +0.0
+std::uint64_t bits(double x) {
+    return std::bit_cast<std::uint64_t>(x + 0.0);
+}  // -0.0 -> +0.0
 
 std::uint64_t mix(std::uint64_t h, double x) {
     h ^= bits(x) + 0x9E37'79B9'7F4A'7C15ull + (h << 6) + (h >> 2);
@@ -29,7 +31,8 @@ std::vector<std::uint32_t> first_occurrences(std::span<const predicates::Point3>
     const auto same = [&](std::size_t a, std::size_t b) {
         const auto& p = points[a];
         const auto& q = points[b];
-        return p.x == q.x && p.y == q.y && p.z == q.z && (weights.empty() || weights[a] == weights[b]);
+        return p.x == q.x && p.y == q.y && p.z == q.z &&
+               (weights.empty() || weights[a] == weights[b]);
     };
     for (std::size_t i = 0; i < n; ++i) {
         std::uint64_t h = mix(mix(mix(0, points[i].x), points[i].y), points[i].z);

@@ -2,7 +2,8 @@
 
 namespace cavity::core {
 
-std::string located_message(const std::string& file, std::optional<std::size_t> line,
+std::string located_message(const std::string& file,
+                            std::optional<std::size_t> line,
                             const std::string& what) {
     if (file.empty()) {
         return what;

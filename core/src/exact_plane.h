@@ -36,7 +36,9 @@ inline Rational dot(const ExactPoint& u, const ExactPoint& v) {
     return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
 }
 
-inline bool is_zero(const ExactPoint& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+inline bool is_zero(const ExactPoint& v) {
+    return v[0] == 0 && v[1] == 0 && v[2] == 0;
+}
 
 /// The plane through three non-collinear points a, b, c, with normal n = (b - a) x (c - a).
 class ExactPlane {

@@ -6,7 +6,9 @@ namespace cavity::core {
 
 namespace {
 
-std::array<VertexId, 3> reversed(const std::array<VertexId, 3>& f) { return {f[0], f[2], f[1]}; }
+std::array<VertexId, 3> reversed(const std::array<VertexId, 3>& f) {
+    return {f[0], f[2], f[1]};
+}
 
 }  // namespace
 
@@ -127,6 +129,8 @@ HalfFacet FaceHashStorage::adjacent(TetId t, int f) const {
     }
 }
 
-std::size_t FaceHashStorage::bytes() const { return TetPool::bytes() + slots_.capacity() * sizeof(Slot); }
+std::size_t FaceHashStorage::bytes() const {
+    return TetPool::bytes() + slots_.capacity() * sizeof(Slot);
+}
 
 }  // namespace cavity::core

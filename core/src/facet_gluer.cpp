@@ -6,7 +6,9 @@ namespace cavity::core {
 
 namespace {
 
-std::uint64_t edge_key(VertexId p, VertexId q) { return (static_cast<std::uint64_t>(p) << 32) | q; }
+std::uint64_t edge_key(VertexId p, VertexId q) {
+    return (static_cast<std::uint64_t>(p) << 32) | q;
+}
 
 }  // namespace
 

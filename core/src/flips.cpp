@@ -26,7 +26,8 @@ bool valid_replacement(const ArrayStorage& storage,
                        const std::vector<TetVertices>& new_tets) {
     std::vector<VertexId> witnesses;
     const auto add = [&](VertexId v) {
-        if (v != kGhostVertex && std::find(witnesses.begin(), witnesses.end(), v) == witnesses.end()) {
+        if (v != kGhostVertex &&
+            std::find(witnesses.begin(), witnesses.end(), v) == witnesses.end()) {
             witnesses.push_back(v);
         }
     };

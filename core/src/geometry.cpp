@@ -7,11 +7,11 @@ namespace cavity::core {
 Geometry::Geometry(std::vector<Point3> points,
                    std::vector<std::uint32_t> keys,
                    std::vector<double> weights)
-    : points_(std::move(points))
-    , keys_(std::move(keys))
-    , weights_(std::move(weights)) {}
+    : points_(std::move(points)), keys_(std::move(keys)), weights_(std::move(weights)) {}
 
-void Geometry::count(const perturbation::SosVerdict& v, PredicateKind kind, Counters* counters) const {
+void Geometry::count(const perturbation::SosVerdict& v,
+                     PredicateKind kind,
+                     Counters* counters) const {
     counters->count_predicate(kind, v.stage);
     if (v.cofactors > 0) {
         ++counters->perturbations;
@@ -23,11 +23,12 @@ bool Geometry::conflicts_solid_exactly(const TetVertices& t, VertexId u, Counter
     const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
     if (!weighted()) {
         if (counters == nullptr) {
-            return perturbation::insphere_sos(point(t[0]), point(t[1]), point(t[2]), point(t[3]),
-                                              point(u), keys) == Sign::kPos;
+            return perturbation::insphere_sos(
+                       point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys) ==
+                   Sign::kPos;
         }
-        const auto v = perturbation::insphere_sos_staged(point(t[0]), point(t[1]), point(t[2]),
-                                                         point(t[3]), point(u), keys);
+        const auto v = perturbation::insphere_sos_staged(
+            point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys);
         count(v, PredicateKind::kInsphere, counters);
         return v.sign == Sign::kPos;
     }
@@ -61,12 +62,15 @@ bool Geometry::conflicts_ghost(const TetVertices& t,
     const perturbation::Keys4 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[u]};
     perturbation::SosVerdict v;
     if (!weighted()) {
-        v = perturbation::outer_halfspace_sos_staged(point(t[0]), point(t[1]), point(t[2]),
-                                                     point(behind), point(u), keys);
+        v = perturbation::outer_halfspace_sos_staged(
+            point(t[0]), point(t[1]), point(t[2]), point(behind), point(u), keys);
     } else {
-        v = perturbation::outer_halfspace_weighted_sos_staged(
-            weighted_point(t[0]), weighted_point(t[1]), weighted_point(t[2]),
-            weighted_point(behind), weighted_point(u), keys);
+        v = perturbation::outer_halfspace_weighted_sos_staged(weighted_point(t[0]),
+                                                              weighted_point(t[1]),
+                                                              weighted_point(t[2]),
+                                                              weighted_point(behind),
+                                                              weighted_point(u),
+                                                              keys);
     }
     if (counters != nullptr) {
         count(v, PredicateKind::kGhost, counters);

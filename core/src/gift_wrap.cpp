@@ -116,8 +116,8 @@ GiftWrapResult gift_wrap_delaunay(const PointSet& points) {
     }
     const Geometry geometry = geometry_by_index(points);
     const auto boot = find_bootstrap(points.points, candidates);
-    TetVertices start{candidates[boot[0]], candidates[boot[1]], candidates[boot[2]],
-                      candidates[boot[3]]};
+    TetVertices start{
+        candidates[boot[0]], candidates[boot[1]], candidates[boot[2]], candidates[boot[3]]};
     if (geometry.orient3d(start[0], start[1], start[2], start[3], nullptr) == Sign::kNeg) {
         std::swap(start[0], start[1]);
     }
@@ -157,8 +157,8 @@ std::vector<TetVertices> gift_wrap_cavity(const Geometry& geometry,
                                           bool ghost_allowed,
                                           RetriangulationCounters* counters) {
     RetriangulationCounters local;
-    detail::GiftWrapEngine engine(geometry, candidates, ghost_allowed,
-                                  counters != nullptr ? *counters : local);
+    detail::GiftWrapEngine engine(
+        geometry, candidates, ghost_allowed, counters != nullptr ? *counters : local);
     for (const TetVertices& t : boundary) {
         engine.offer(facet_vertices(t, 3), t[3]);
     }

@@ -18,7 +18,9 @@ bool holds(const GiftWrapEngine::Triangle& t, VertexId v) {
     return t[0] == v || t[1] == v || t[2] == v;
 }
 
-std::string name(VertexId v) { return v == kGhostVertex ? "ghost" : std::to_string(v); }
+std::string name(VertexId v) {
+    return v == kGhostVertex ? "ghost" : std::to_string(v);
+}
 
 /// True when a, b, c lie on one line: every coordinate-plane projection is degenerate. The 2D
 /// orientations are exact orient3d calls on points dropped into the plane z = 0 against (0,0,1).
@@ -27,9 +29,15 @@ bool collinear(const Point3& a, const Point3& b, const Point3& c) {
     const auto flat = [&](auto project) {
         return predicates::orient3d(project(a), project(b), project(c), up) == Sign::kZero;
     };
-    return flat([](const Point3& p) { return Point3{p.x, p.y, 0}; }) &&
-           flat([](const Point3& p) { return Point3{p.y, p.z, 0}; }) &&
-           flat([](const Point3& p) { return Point3{p.z, p.x, 0}; });
+    return flat([](const Point3& p) {
+               return Point3{p.x, p.y, 0};
+           }) &&
+           flat([](const Point3& p) {
+               return Point3{p.y, p.z, 0};
+           }) &&
+           flat([](const Point3& p) {
+               return Point3{p.z, p.x, 0};
+           });
 }
 
 /// For c and z coplanar with a and b: true when they lie on the same side of line ab (some
@@ -47,9 +55,15 @@ bool same_side_of_line(const Point3& a, const Point3& b, const Point3& c, const 
         }
         return sc == sz ? 1 : 0;
     };
-    for (int r : {test([](const Point3& p) { return Point3{p.x, p.y, 0}; }),
-                  test([](const Point3& p) { return Point3{p.y, p.z, 0}; }),
-                  test([](const Point3& p) { return Point3{p.z, p.x, 0}; })}) {
+    for (int r : {test([](const Point3& p) {
+                      return Point3{p.x, p.y, 0};
+                  }),
+                  test([](const Point3& p) {
+                      return Point3{p.y, p.z, 0};
+                  }),
+                  test([](const Point3& p) {
+                      return Point3{p.z, p.x, 0};
+                  })}) {
         if (r >= 0) {
             return r == 1;
         }
@@ -124,17 +138,24 @@ bool GiftWrapEngine::in_outer_halfspace(const TetVertices& ghost, VertexId u) {
         return false;
     }
     ++counters_.insphere_calls;
-    const perturbation::Keys4 keys{geometry_.key(ghost[0]), geometry_.key(ghost[1]),
-                                   geometry_.key(ghost[2]), geometry_.key(u)};
+    const perturbation::Keys4 keys{geometry_.key(ghost[0]),
+                                   geometry_.key(ghost[1]),
+                                   geometry_.key(ghost[2]),
+                                   geometry_.key(u)};
     if (!geometry_.weighted()) {
-        return perturbation::outer_halfspace_sos(geometry_.point(ghost[0]), geometry_.point(ghost[1]),
-                                                 geometry_.point(ghost[2]), geometry_.point(behind),
-                                                 geometry_.point(u), keys) == Sign::kPos;
+        return perturbation::outer_halfspace_sos(geometry_.point(ghost[0]),
+                                                 geometry_.point(ghost[1]),
+                                                 geometry_.point(ghost[2]),
+                                                 geometry_.point(behind),
+                                                 geometry_.point(u),
+                                                 keys) == Sign::kPos;
     }
-    return perturbation::outer_halfspace_weighted_sos(
-               geometry_.weighted_point(ghost[0]), geometry_.weighted_point(ghost[1]),
-               geometry_.weighted_point(ghost[2]), geometry_.weighted_point(behind),
-               geometry_.weighted_point(u), keys) == Sign::kPos;
+    return perturbation::outer_halfspace_weighted_sos(geometry_.weighted_point(ghost[0]),
+                                                      geometry_.weighted_point(ghost[1]),
+                                                      geometry_.weighted_point(ghost[2]),
+                                                      geometry_.weighted_point(behind),
+                                                      geometry_.weighted_point(u),
+                                                      keys) == Sign::kPos;
 }
 
 VertexId GiftWrapEngine::ghost_apex(const TetVertices& partial, VertexId behind_apex) {

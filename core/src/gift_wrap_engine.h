@@ -44,8 +44,8 @@ public:
 private:
     struct TriangleHash {
         std::size_t operator()(const Triangle& t) const {
-            return (std::size_t{t[0]} * 0x9E3779B97F4A7C15ull) ^ (std::size_t{t[1]} * 0xC2B2AE3D27D4EB4Full) ^
-                   std::size_t{t[2]};
+            return (std::size_t{t[0]} * 0x9E3779B97F4A7C15ull) ^
+                   (std::size_t{t[1]} * 0xC2B2AE3D27D4EB4Full) ^ std::size_t{t[2]};
         }
     };
 
@@ -57,6 +57,7 @@ private:
     std::span<const VertexId> candidates_;
     bool ghost_allowed_;
     RetriangulationCounters& counters_;
+
     struct Unfinished {
         Triangle seen;  // oriented, from the finished side
         VertexId apex;  // of the finished tetrahedron

@@ -15,7 +15,8 @@ namespace {
 // ERANGE both for a total underflow and for a subnormal result, so this tells "0e-400" (zero,
 // fine) from "1e-400" (a nonzero value that no double can hold).
 bool literal_is_zero(std::string_view token) {
-    bool hex = token.find("0x") != std::string_view::npos || token.find("0X") != std::string_view::npos;
+    bool hex =
+        token.find("0x") != std::string_view::npos || token.find("0X") != std::string_view::npos;
     std::size_t start = hex ? token.find_first_of("xX") + 1 : 0;
     for (std::size_t i = start; i < token.size(); ++i) {
         char c = token[i];
@@ -76,8 +77,9 @@ ParsedNumber parse_number(std::string_view token) {
     }
     if (std::isinf(value)) {
         const bool literal_inf = text.find_first_of("iI") != std::string::npos;
-        return {std::nullopt, literal_inf ? "infinity is not allowed: '" + text + "'"
-                                          : "out of the range of a double: '" + text + "'"};
+        return {std::nullopt,
+                literal_inf ? "infinity is not allowed: '" + text + "'"
+                            : "out of the range of a double: '" + text + "'"};
     }
     if (errno == ERANGE && value == 0.0 && !literal_is_zero(token)) {
         return {std::nullopt, "underflows to zero, out of the range of a double: '" + text + "'"};

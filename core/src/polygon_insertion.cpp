@@ -72,16 +72,19 @@ std::array<VertexId, 3> sorted_triangle(std::array<VertexId, 3> t) {
 /// The state of one FlipInsertPolygon call.
 class PolygonInserter {
 public:
-    PolygonInserter(ArrayStorage& storage, const Geometry& geometry, const Plc& plc,
-                    std::size_t facet, ConstrainedFaces& constrained,
+    PolygonInserter(ArrayStorage& storage,
+                    const Geometry& geometry,
+                    const Plc& plc,
+                    std::size_t facet,
+                    ConstrainedFaces& constrained,
                     PolygonInsertionCounters& counters)
-        : storage_(storage),
-          geometry_(geometry),
-          plc_(plc),
-          facet_(geometry, plc, plc.facets[facet]),
-          name_(facet_name(plc, facet)),
-          constrained_(constrained),
-          counters_(counters) {
+        : storage_(storage)
+        , geometry_(geometry)
+        , plc_(plc)
+        , facet_(geometry, plc, plc.facets[facet])
+        , name_(facet_name(plc, facet))
+        , constrained_(constrained)
+        , counters_(counters) {
         work_.facet = static_cast<std::uint32_t>(facet);
     }
 
@@ -116,6 +119,7 @@ private:
         }
         return n;
     }
+
     bool in_region(TetId t) const { return in_region_.contains(t); }
 
     /// Steps 1-2: R by the rotary and depth-first searches (polygon_region.h).
@@ -146,7 +150,8 @@ private:
             return;
         }
         ++counters_.certify_calls;
-        const VertexId q = storage_.vertices(tet_of(across))[static_cast<std::size_t>(facet_of(across))];
+        const VertexId q =
+            storage_.vertices(tet_of(across))[static_cast<std::size_t>(facet_of(across))];
         // S = det[p_i - q, H_i - H_q] (> 0: the lifted q is below aff sigma+), linear in each
         // height: S = sum_i (H_i - H_q) C_i with C_i the cofactors of the height column.
         const ExactPoint eq = exact_point(geometry_.point(q));
@@ -192,8 +197,9 @@ private:
             terms.emplace_back(geometry_.key(sigma[i]), cofactor[i] / s1);
         }
         terms.emplace_back(geometry_.key(q), Rational(-sum / s1));
-        std::sort(terms.begin(), terms.end(),
-                  [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::sort(terms.begin(), terms.end(), [](const auto& a, const auto& b) {
+            return a.first < b.first;
+        });
         for (auto& term : terms) {
             if (term.second != 0) {
                 event.time.terms.push_back(std::move(term));
@@ -260,8 +266,9 @@ private:
             return {};
         }
         if (beyond == 1) {
-            return ring.tets.size() == 3 ? flip32(storage_, geometry_, e.tet, i, j, &counters_.flips)
-                                         : std::vector<TetId>{};
+            return ring.tets.size() == 3
+                       ? flip32(storage_, geometry_, e.tet, i, j, &counters_.flips)
+                       : std::vector<TetId>{};
         }
         if (ring.tets.size() != 4) {
             return {};
@@ -312,7 +319,8 @@ private:
         for (const Event& e : held) {
             if (still_there(e)) {
                 throw Error(located_message(
-                    plc_.source, facet_.facet().line,
+                    plc_.source,
+                    facet_.facet().line,
                     name_ + ": polygon insertion stuck on inadmissible flips (the PLC has no "
                             "CDT here; is it edge-protected?)"));
             }
@@ -335,7 +343,8 @@ private:
             }
             const TetVertices& v = storage_.vertices(t);
             if (in_region(t) && facet_.crosses(v)) {
-                throw Error(located_message(plc_.source, facet_.facet().line,
+                throw Error(located_message(plc_.source,
+                                            facet_.facet().line,
                                             name_ + ": a tetrahedron still crosses the polygon "
                                                     "after every flip"));
             }

@@ -17,7 +17,8 @@ Triangle sorted(Triangle t) {
 /// True when b is a with its orientation reversed (b is an odd permutation of a).
 bool reversed(const Triangle& a, const Triangle& b) {
     for (int r = 0; r < 3; ++r) {
-        if (b[0] == a[static_cast<std::size_t>(r)] && b[1] == a[static_cast<std::size_t>((r + 2) % 3)] &&
+        if (b[0] == a[static_cast<std::size_t>(r)] &&
+            b[1] == a[static_cast<std::size_t>((r + 2) % 3)] &&
             b[2] == a[static_cast<std::size_t>((r + 1) % 3)]) {
             return true;
         }

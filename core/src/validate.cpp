@@ -67,10 +67,9 @@ public:
         check_delaunay_and_hull();
         check_points();
         report_.triangles = triangles_;
-        const long long euler = static_cast<long long>(report_.vertices) -
-                                static_cast<long long>(report_.edges) +
-                                static_cast<long long>(report_.triangles) -
-                                static_cast<long long>(report_.tets);
+        const long long euler =
+            static_cast<long long>(report_.vertices) - static_cast<long long>(report_.edges) +
+            static_cast<long long>(report_.triangles) - static_cast<long long>(report_.tets);
         if (euler != 1) {
             problem("Euler characteristic V - E + F - T = " + std::to_string(euler) +
                     ", not 1: the tetrahedra do not form a triangulated ball");
@@ -138,11 +137,13 @@ private:
             for (int f = 0; f < 4; ++f) {
                 auto key = facet_vertices(tets_[t], f);
                 const bool even = sorted_is_even(key);
-                faces_.push_back({key, static_cast<std::uint32_t>(half_facet(static_cast<TetId>(t), f)), even});
+                faces_.push_back(
+                    {key, static_cast<std::uint32_t>(half_facet(static_cast<TetId>(t), f)), even});
             }
         }
-        std::sort(faces_.begin(), faces_.end(),
-                  [](const FaceRecord& a, const FaceRecord& b) { return a.key < b.key; });
+        std::sort(faces_.begin(), faces_.end(), [](const FaceRecord& a, const FaceRecord& b) {
+            return a.key < b.key;
+        });
     }
 
     /// Sign of u against tetrahedron t: kPos when u conflicts with it (perturbed).
@@ -160,6 +161,7 @@ private:
             std::uint32_t from, to;
             std::uint32_t half_facet;  // of the tetrahedron behind the hull triangle
         };
+
         std::vector<HullEdge> hull_edges;
         std::size_t i = 0;
         while (i < faces_.size()) {
@@ -180,7 +182,9 @@ private:
                             std::to_string(tet_of(b.half_facet)) +
                             " lie on the same side of their common triangle");
                 } else {
-                    const std::uint32_t apex_b = tets_[tet_of(b.half_facet)][static_cast<std::size_t>(facet_of(b.half_facet))];
+                    const std::uint32_t apex_b =
+                        tets_[tet_of(b.half_facet)]
+                             [static_cast<std::size_t>(facet_of(b.half_facet))];
                     if (conflict(tet_of(a.half_facet), apex_b) != Sign::kNeg) {
                         problem(tet_name(tet_of(a.half_facet)) + " and " +
                                 tet_name(tet_of(b.half_facet)) +
@@ -190,11 +194,13 @@ private:
             } else {
                 ++report_.hull_triangles;
                 // The hull triangle seen from outside is the reverse of the facet.
-                const auto tri = facet_vertices(tets_[tet_of(a.half_facet)], facet_of(a.half_facet));
+                const auto tri =
+                    facet_vertices(tets_[tet_of(a.half_facet)], facet_of(a.half_facet));
                 const std::array<std::uint32_t, 3> out{tri[0], tri[2], tri[1]};
                 for (int e = 0; e < 3; ++e) {
                     hull_edges.push_back({out[static_cast<std::size_t>(e)],
-                                          out[static_cast<std::size_t>((e + 1) % 3)], a.half_facet});
+                                          out[static_cast<std::size_t>((e + 1) % 3)],
+                                          a.half_facet});
                 }
             }
             i = j;
@@ -212,8 +218,8 @@ private:
         for (const auto& e : edges) {
             // The same directed edge twice, or no partner running the other way: not a closed,
             // consistently oriented surface.
-            const auto twin = std::equal_range(edges.begin(), edges.end(),
-                                               decltype(e){e.to, e.from, 0}, less);
+            const auto twin =
+                std::equal_range(edges.begin(), edges.end(), decltype(e){e.to, e.from, 0}, less);
             const auto same = std::equal_range(edges.begin(), edges.end(), e, less);
             if (twin.second - twin.first != 1 || same.second - same.first != 1) {
                 problem("hull edge (" + std::to_string(e.from) + " " + std::to_string(e.to) +
@@ -251,11 +257,11 @@ private:
         const std::uint32_t behind = tets_[tet_of(h1)][static_cast<std::size_t>(facet_of(h1))];
         const std::array<std::uint32_t, 3> v{inner1[0], inner1[2], inner1[1]};  // outward
         const perturbation::Keys4 keys{v[0], v[1], v[2], far};
-        const Sign in_disk =
-            points_.weighted()
-                ? perturbation::outer_halfspace_weighted_sos(wp(v[0]), wp(v[1]), wp(v[2]),
-                                                             wp(behind), wp(far), keys)
-                : perturbation::outer_halfspace_sos(p(v[0]), p(v[1]), p(v[2]), p(behind), p(far), keys);
+        const Sign in_disk = points_.weighted()
+                                 ? perturbation::outer_halfspace_weighted_sos(
+                                       wp(v[0]), wp(v[1]), wp(v[2]), wp(behind), wp(far), keys)
+                                 : perturbation::outer_halfspace_sos(
+                                       p(v[0]), p(v[1]), p(v[2]), p(behind), p(far), keys);
         if (in_disk != Sign::kNeg) {
             problem("coplanar hull triangles at edge (" + std::to_string(from) + " " +
                     std::to_string(to) + ") are not Delaunay in their plane");
@@ -268,14 +274,17 @@ private:
         for (const auto& v : tets_) {
             for (int i = 0; i < 4; ++i) {
                 for (int j = i + 1; j < 4; ++j) {
-                    const auto a = std::min(v[static_cast<std::size_t>(i)], v[static_cast<std::size_t>(j)]);
-                    const auto b = std::max(v[static_cast<std::size_t>(i)], v[static_cast<std::size_t>(j)]);
+                    const auto a =
+                        std::min(v[static_cast<std::size_t>(i)], v[static_cast<std::size_t>(j)]);
+                    const auto b =
+                        std::max(v[static_cast<std::size_t>(i)], v[static_cast<std::size_t>(j)]);
                     edges.push_back((static_cast<std::uint64_t>(a) << 32) | b);
                 }
             }
         }
         std::sort(edges.begin(), edges.end());
-        report_.edges = static_cast<std::size_t>(std::unique(edges.begin(), edges.end()) - edges.begin());
+        report_.edges =
+            static_cast<std::size_t>(std::unique(edges.begin(), edges.end()) - edges.begin());
     }
 
     void check_points() {
@@ -322,7 +331,8 @@ private:
                 bool inside = true;
                 for (int f = 0; f < 4 && inside; ++f) {
                     const auto tri = facet_vertices(v, f);
-                    inside = predicates::orient3d(p(tri[0]), p(tri[1]), p(tri[2]), p(u)) != Sign::kNeg;
+                    inside =
+                        predicates::orient3d(p(tri[0]), p(tri[1]), p(tri[2]), p(u)) != Sign::kNeg;
                 }
                 if (inside) {
                     contained = true;

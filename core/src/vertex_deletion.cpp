@@ -104,8 +104,8 @@ Triangulation delete_vertices(const PointSet& points,
         is_duplicate[d[0]] = true;
     }
     for (std::uint32_t id : ids) {
-        const bool redundant = std::binary_search(triangulation.redundant.begin(),
-                                                  triangulation.redundant.end(), id);
+        const bool redundant =
+            std::binary_search(triangulation.redundant.begin(), triangulation.redundant.end(), id);
         if (is_duplicate[id] || redundant) {
             continue;
         }

@@ -1,10 +1,5 @@
 #include "child_process.h"
 
-#include <fcntl.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
@@ -12,6 +7,11 @@
 #include <cstring>
 #include <ctime>
 #include <exception>
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "cavity/core/error.h"
 
@@ -126,7 +126,8 @@ ChildOutcome run_in_child(const std::function<EngineReport()>& work) {
     if (!wire.ok) {
         throw Error(wire.message);
     }
-    return {wire.report, seconds_of(usage.ru_utime) + seconds_of(usage.ru_stime),
+    return {wire.report,
+            seconds_of(usage.ru_utime) + seconds_of(usage.ru_stime),
             static_cast<std::uint64_t>(usage.ru_maxrss) * 1024u};
 }
 

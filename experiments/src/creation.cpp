@@ -10,7 +10,8 @@
 
 namespace cavity::experiments {
 
-CreationAudit audit_creation(const core::PointSet& points, std::span<const std::uint32_t> sequence) {
+CreationAudit audit_creation(const core::PointSet& points,
+                             std::span<const std::uint32_t> sequence) {
     LifeCycleObserver observer;
     // Proposition 5.2's identity holds for an exchangeable order: the bootstrap must be the
     // sequence's own first four, not the widest of 64 candidates, which biases Σj upwards.
@@ -38,8 +39,9 @@ CreationAudit audit_creation(const core::PointSet& points, std::span<const std::
             if (y == t[0] || y == t[1] || y == t[2] || y == t[3]) {
                 continue;
             }
-            if (perturbation::insphere_sos(p[t[0]], p[t[1]], p[t[2]], p[t[3]], p[y],
-                                           {t[0], t[1], t[2], t[3], y}) == predicates::Sign::kPos) {
+            if (perturbation::insphere_sos(
+                    p[t[0]], p[t[1]], p[t[2]], p[t[3]], p[y], {t[0], t[1], t[2], t[3], y}) ==
+                predicates::Sign::kPos) {
                 ++j;
                 first_stopper = std::min(first_stopper, observer.rank_of_input(y));
             }

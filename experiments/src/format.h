@@ -20,7 +20,9 @@ inline std::string number(double value) {
     return buffer;
 }
 
-inline std::string number(std::uint64_t value) { return std::to_string(value); }
+inline std::string number(std::uint64_t value) {
+    return std::to_string(value);
+}
 
 /// A sample's sum and sum of squares, for its mean and its standard deviation (n - 1 in the
 /// denominator) over the insertion orders of a run.
@@ -48,7 +50,9 @@ struct Moments {
 /// reversal of alternate rounds; "brio:R" is BRIO with ratio R in [0, 1), overriding the suite's
 /// brio-ratio). Order seeds are offset from point seeds so that the two random streams differ.
 /// \throws core::Error for an unknown name or a ratio that is not a number in [0, 1).
-inline core::OrderOptions order_options(const std::string& name, double brio_ratio, std::uint64_t seed) {
+inline core::OrderOptions order_options(const std::string& name,
+                                        double brio_ratio,
+                                        std::uint64_t seed) {
     core::OrderOptions options;
     options.brio_ratio = brio_ratio;
     std::string kind = name == "brio-noreverse" ? "brio" : name;

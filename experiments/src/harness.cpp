@@ -78,10 +78,17 @@ struct Paths {
     fs::path csv, j_csv, meta, part, j_part;
 };
 
-Paths paths_for(const fs::path& dir, const std::string& name, std::uint64_t index, std::uint64_t count) {
-    const std::string part = name + ".part-" + std::to_string(index) + "-of-" + std::to_string(count);
-    return {dir / (name + ".csv"), dir / (name + ".j.csv"), dir / (name + ".meta.json"),
-            dir / (part + ".csv"), dir / (part + ".j.csv")};
+Paths paths_for(const fs::path& dir,
+                const std::string& name,
+                std::uint64_t index,
+                std::uint64_t count) {
+    const std::string part =
+        name + ".part-" + std::to_string(index) + "-of-" + std::to_string(count);
+    return {dir / (name + ".csv"),
+            dir / (name + ".j.csv"),
+            dir / (name + ".meta.json"),
+            dir / (part + ".csv"),
+            dir / (part + ".j.csv")};
 }
 
 /// Appends whole lines and flushes, so a crash leaves complete rows behind.
@@ -98,7 +105,9 @@ void append_lines(const fs::path& path, const std::vector<std::string>& lines) {
 
 /// Prepares a part file with `header`: kept when resuming and its header matches, else started
 /// afresh. Returns the keys of the rows already complete.
-std::set<std::string> open_part(const fs::path& path, const std::string& header, std::size_t columns,
+std::set<std::string> open_part(const fs::path& path,
+                                const std::string& header,
+                                std::size_t columns,
                                 bool resume) {
     std::set<std::string> done;
     if (resume && fs::exists(path)) {
@@ -126,8 +135,11 @@ std::set<std::string> open_part(const fs::path& path, const std::string& header,
 
 /// Seeds a missing part file from a merged table made earlier, so --resume after a completed
 /// run (or with a different shard count) redoes nothing already measured.
-void seed_part_from_merged(const fs::path& merged, const fs::path& part, const std::string& header,
-                           std::size_t columns, const std::set<std::string>& shard_keys) {
+void seed_part_from_merged(const fs::path& merged,
+                           const fs::path& part,
+                           const std::string& header,
+                           std::size_t columns,
+                           const std::set<std::string>& shard_keys) {
     if (fs::exists(part) || !fs::exists(merged)) {
         return;
     }
@@ -171,7 +183,8 @@ HarnessResult run_experiment(const HarnessOptions& options) {
     const bool has_j = !j_metrics.empty();
     const std::string header = join(columns);
     const std::string j_header = join(j_cols);
-    const Paths mine = paths_for(options.out_dir, suite.name, options.shard_index, options.shard_count);
+    const Paths mine =
+        paths_for(options.out_dir, suite.name, options.shard_index, options.shard_count);
 
     HarnessResult result;
     result.runs_total = runs.size();
@@ -191,7 +204,8 @@ HarnessResult run_experiment(const HarnessOptions& options) {
                 seed_part_from_merged(mine.j_csv, mine.j_part, j_header, j_cols.size(), shard_keys);
             }
         }
-        const std::set<std::string> done = open_part(mine.part, header, columns.size(), options.resume);
+        const std::set<std::string> done =
+            open_part(mine.part, header, columns.size(), options.resume);
         if (has_j) {
             open_part(mine.j_part, j_header, j_cols.size(), options.resume);
         }
@@ -250,7 +264,8 @@ HarnessResult run_experiment(const HarnessOptions& options) {
                 auto& list = j_rows[key];
                 // A run interrupted after its j rows and redone appends them twice: keep the
                 // last complete set, which starts again at the run's first j.
-                if (!list.empty() && split(row)[key_columns().size()] == split(list.front())[key_columns().size()]) {
+                if (!list.empty() &&
+                    split(row)[key_columns().size()] == split(list.front())[key_columns().size()]) {
                     list.clear();
                 }
                 list.push_back(row);

@@ -16,19 +16,25 @@ using predicates::insphere;
 using predicates::orient3d;
 using predicates::Sign;
 
-int sign_of(Sign s) { return static_cast<int>(s); }
+int sign_of(Sign s) {
+    return static_cast<int>(s);
+}
 
 struct Vec {
     double x, y, z;
 };
 
-Vec sub(const Point3& p, const Point3& q) { return {p.x - q.x, p.y - q.y, p.z - q.z}; }
+Vec sub(const Point3& p, const Point3& q) {
+    return {p.x - q.x, p.y - q.y, p.z - q.z};
+}
 
 Vec cross(const Vec& u, const Vec& v) {
     return {u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x};
 }
 
-double dot(const Vec& u, const Vec& v) { return u.x * v.x + u.y * v.y + u.z * v.z; }
+double dot(const Vec& u, const Vec& v) {
+    return u.x * v.x + u.y * v.y + u.z * v.z;
+}
 
 /// One point of the pencil around a triangle: its index, the side of the triangle's plane it lies
 /// on (orient3d sign) and an approximate λ used only to seed the exact sort.
@@ -42,10 +48,7 @@ struct PencilPoint {
 class Pencil {
 public:
     Pencil(std::span<const Point3> points, std::uint32_t a, std::uint32_t b, std::uint32_t c)
-        : points_(points)
-        , a_(points[a])
-        , b_(points[b])
-        , c_(points[c]) {
+        : points_(points), a_(points[a]), b_(points[b]), c_(points[c]) {
         // Circumcentre of abc relative to a, and the normal pointing to the positive side of
         // orient3d(a, b, c, .) (orient3d(a,b,c,d) = -((b-a) x (c-a)) . (d-a)).
         const Vec u = sub(b_, a_);
@@ -56,7 +59,8 @@ public:
         const Vec wu = cross(w, u);
         const double uu = dot(u, u);
         const double vv = dot(v, v);
-        centre_ = {(uu * vw.x + vv * wu.x) / (2 * w2), (uu * vw.y + vv * wu.y) / (2 * w2),
+        centre_ = {(uu * vw.x + vv * wu.x) / (2 * w2),
+                   (uu * vw.y + vv * wu.y) / (2 * w2),
                    (uu * vw.z + vv * wu.z) / (2 * w2)};
         rho2_ = dot(centre_, centre_);
         normal_ = {-w.x, -w.y, -w.z};
@@ -117,8 +121,9 @@ void sweep_triangle(std::span<const Point3> points,
     if (sweep.empty()) {
         return;  // a, b, c collinear, or every point in one plane: no tetrahedron on abc
     }
-    std::sort(sweep.begin(), sweep.end(),
-              [](const PencilPoint& p, const PencilPoint& q) { return p.lambda < q.lambda; });
+    std::sort(sweep.begin(), sweep.end(), [](const PencilPoint& p, const PencilPoint& q) {
+        return p.lambda < q.lambda;
+    });
     // The double order is almost right; insertion sort with the exact comparison repairs it in
     // O(n + inversions) exact calls and is correct whatever order it starts from.
     for (std::size_t i = 1; i < sweep.size(); ++i) {
@@ -263,9 +268,10 @@ std::size_t circumball_count(std::span<const Point3> points,
         if (y == a || y == b || y == c || y == d) {
             continue;
         }
-        const Sign s = perturbed ? perturbation::insphere_sos(pa, pb, pc, pd, points[y],
-                                                               {tet[0], tet[1], tet[2], tet[3], y})
-                                 : insphere(pa, pb, pc, pd, points[y]);
+        const Sign s = perturbed
+                           ? perturbation::insphere_sos(
+                                 pa, pb, pc, pd, points[y], {tet[0], tet[1], tet[2], tet[3], y})
+                           : insphere(pa, pb, pc, pd, points[y]);
         inside += s == Sign::kPos ? 1 : 0;
     }
     return inside;

@@ -24,10 +24,14 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-double ratio(double a, double b) { return b > 0 ? a / b : 0.0; }
+double ratio(double a, double b) {
+    return b > 0 ? a / b : 0.0;
+}
 
 /// m^2 log m, the event bound of Proposition 5.5 (natural log; 0 for m < 2).
-double m2_log_m(double m) { return m >= 2 ? m * m * std::log(m) : 0.0; }
+double m2_log_m(double m) {
+    return m >= 2 ? m * m * std::log(m) : 0.0;
+}
 
 std::uint64_t total_flips(const core::RetriangulationCounters& c) {
     return std::accumulate(c.flips.begin(), c.flips.end(), std::uint64_t{0});
@@ -36,18 +40,58 @@ std::uint64_t total_flips(const core::RetriangulationCounters& c) {
 }  // namespace
 
 std::vector<std::string> cdt_columns() {
-    return {"points", "polygons", "protection_points", "vertices", "tets", "protect_s", "dt_s",
-            "insert_s", "validate_s", "flips", "flips_23", "flips_32", "flips_14", "flips_41",
-            "flips_22", "flips_44", "flips_refused", "certify_calls", "events_queued",
-            "events_stale", "events_held", "region_tets", "sum_m", "max_m", "rotary_steps",
-            "search_visited", "search_per_region_tet", "flips_per_n2", "events_per_n2_log_n",
-            "polygon_records", "sum_m2", "flips_per_sum_m2", "max_flips_per_m2",
-            "polygons_at_or_over_m2", "max_events_per_m2_log_m", "valid", "cdt_problems"};
+    return {"points",
+            "polygons",
+            "protection_points",
+            "vertices",
+            "tets",
+            "protect_s",
+            "dt_s",
+            "insert_s",
+            "validate_s",
+            "flips",
+            "flips_23",
+            "flips_32",
+            "flips_14",
+            "flips_41",
+            "flips_22",
+            "flips_44",
+            "flips_refused",
+            "certify_calls",
+            "events_queued",
+            "events_stale",
+            "events_held",
+            "region_tets",
+            "sum_m",
+            "max_m",
+            "rotary_steps",
+            "search_visited",
+            "search_per_region_tet",
+            "flips_per_n2",
+            "events_per_n2_log_n",
+            "polygon_records",
+            "sum_m2",
+            "flips_per_sum_m2",
+            "max_flips_per_m2",
+            "polygons_at_or_over_m2",
+            "max_events_per_m2_log_m",
+            "valid",
+            "cdt_problems"};
 }
 
 std::vector<std::string> cdt_j_columns() {
-    return {"polygon", "facet", "m", "region_tets", "rotary_steps", "search_visited", "flips",
-            "events_queued", "flips_per_m2", "events_per_m2_log_m", "flips_below_m2", "us"};
+    return {"polygon",
+            "facet",
+            "m",
+            "region_tets",
+            "rotary_steps",
+            "search_visited",
+            "flips",
+            "events_queued",
+            "flips_per_m2",
+            "events_per_m2_log_m",
+            "flips_below_m2",
+            "us"};
 }
 
 RunOutput cdt(const Suite& suite, const RunSpec& run) {
@@ -112,10 +156,16 @@ RunOutput cdt(const Suite& suite, const RunSpec& run) {
         // Fewer than m^2 flips; an empty region (the polygon already a union of faces) needs none.
         const bool below = static_cast<double>(w.flips) < std::max(m * m, 1.0);
         over += below ? 0 : 1;
-        out.j_rows.push_back({number(std::uint64_t{i}), number(std::uint64_t{w.facet}),
-                              number(w.region_vertices), number(w.region_tets),
-                              number(w.rotary_steps), number(w.search_visited), number(w.flips),
-                              number(w.events_queued), number(flips_m2), number(events),
+        out.j_rows.push_back({number(std::uint64_t{i}),
+                              number(std::uint64_t{w.facet}),
+                              number(w.region_vertices),
+                              number(w.region_tets),
+                              number(w.rotary_steps),
+                              number(w.search_visited),
+                              number(w.flips),
+                              number(w.events_queued),
+                              number(flips_m2),
+                              number(events),
                               below ? "1" : "0",
                               i < polygon_s.size() ? number(polygon_s[i] * 1e6) : "-"});
     }

@@ -48,7 +48,8 @@ RunOutput creation(const Suite& suite, const TierSettings& tier, const RunSpec& 
     for (std::uint64_t r = 0; r < tier.orders; ++r) {
         // Order seeds differ per repetition and from the point seed.
         const core::InsertionOrder order = core::make_insertion_order(
-            points.points, detail::order_options(run.order, suite.brio_ratio, run.seed * 1000003 + r));
+            points.points,
+            detail::order_options(run.order, suite.brio_ratio, run.seed * 1000003 + r));
         const CreationAudit audit = audit_creation(points, order.sequence);
         violations += audit.violations;
         std::uint64_t created_here = 0;
@@ -73,13 +74,18 @@ RunOutput creation(const Suite& suite, const TierSettings& tier, const RunSpec& 
         if (counts.f[j] == 0) {
             continue;
         }
-        const double q_hat = static_cast<double>(created[j]) / (orders * static_cast<double>(counts.f[j]));
+        const double q_hat =
+            static_cast<double>(created[j]) / (orders * static_cast<double>(counts.f[j]));
         const double jj = static_cast<double>(j);
         const double q_uniform = 24.0 / ((jj + 1) * (jj + 2) * (jj + 3) * (jj + 4));
         created_exact += static_cast<double>(counts.f[j]) * q_uniform;
         sum_j_exact += jj * static_cast<double>(counts.f[j]) * q_uniform;
-        out.j_rows.push_back({number(std::uint64_t{j}), number(counts.f[j]), number(created[j]),
-                              number(q_hat), number(q_uniform), number(q_hat * jj * jj * jj * jj)});
+        out.j_rows.push_back({number(std::uint64_t{j}),
+                              number(counts.f[j]),
+                              number(created[j]),
+                              number(q_hat),
+                              number(q_uniform),
+                              number(q_hat * jj * jj * jj * jj)});
     }
     out.values = {number(std::uint64_t{points.size()}),
                   number(tier.orders),

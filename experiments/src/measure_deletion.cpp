@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "canonical.h"
 #include "cavity/core/complex_from_tets.h"
 #include "cavity/core/error.h"
 #include "cavity/core/generate.h"
@@ -11,7 +12,6 @@
 #include "cavity/core/triangulate.h"
 #include "cavity/core/vertex_deletion.h"
 #include "cavity/experiments/measure.h"
-#include "canonical.h"
 #include "format.h"
 
 namespace cavity::experiments::measure {
@@ -53,7 +53,8 @@ Star star_of(const core::ArrayStorage& storage, core::VertexId v) {
 
 /// Bowyer-Watson on the points not deleted, in the original indices: removing points keeps the
 /// relative order of the others' perturbation keys, so it is the triangulation deletion must give.
-detail::TetList rebuilt_without(const core::PointSet& points, const std::vector<bool>& gone,
+detail::TetList rebuilt_without(const core::PointSet& points,
+                                const std::vector<bool>& gone,
                                 const core::OrderOptions& order) {
     core::PointSet kept;
     std::vector<std::uint32_t> original;
@@ -76,16 +77,40 @@ detail::TetList rebuilt_without(const core::PointSet& points, const std::vector<
 }  // namespace
 
 std::vector<std::string> deletion_columns() {
-    return {"points", "tets_before", "tets_after", "deletions", "hull_deletions", "delete_s",
-            "us_per_deletion", "rebuild_s", "mean_degree", "max_degree", "mean_star_tets",
-            "tets_created", "tets_deleted", "facets_wrapped", "apex_orient_tests", "insphere_calls",
-            "created_per_deletion", "insphere_per_deletion", "apex_per_deletion",
-            "apex_per_degree_sq", "equal_rebuild", "hash"};
+    return {"points",
+            "tets_before",
+            "tets_after",
+            "deletions",
+            "hull_deletions",
+            "delete_s",
+            "us_per_deletion",
+            "rebuild_s",
+            "mean_degree",
+            "max_degree",
+            "mean_star_tets",
+            "tets_created",
+            "tets_deleted",
+            "facets_wrapped",
+            "apex_orient_tests",
+            "insphere_calls",
+            "created_per_deletion",
+            "insphere_per_deletion",
+            "apex_per_deletion",
+            "apex_per_degree_sq",
+            "equal_rebuild",
+            "hash"};
 }
 
 std::vector<std::string> deletion_j_columns() {
-    return {"deletion", "vertex", "hull", "degree", "star_tets", "created", "facets_wrapped",
-            "apex_orient_tests", "insphere_calls"};
+    return {"deletion",
+            "vertex",
+            "hull",
+            "degree",
+            "star_tets",
+            "created",
+            "facets_wrapped",
+            "apex_orient_tests",
+            "insphere_calls"};
 }
 
 RunOutput deletion(const Suite& suite, const TierSettings& tier, const RunSpec& run) {
@@ -136,9 +161,14 @@ RunOutput deletion(const Suite& suite, const TierSettings& tier, const RunSpec& 
         total.facets_wrapped += one.facets_wrapped;
         total.apex_orient_tests += one.apex_orient_tests;
         total.insphere_calls += one.insphere_calls;
-        out.j_rows.push_back({number(k), number(std::uint64_t{v}), star.hull ? "1" : "0",
-                              number(star.degree), number(star.tets), number(one.tets_created),
-                              number(one.facets_wrapped), number(one.apex_orient_tests),
+        out.j_rows.push_back({number(k),
+                              number(std::uint64_t{v}),
+                              star.hull ? "1" : "0",
+                              number(star.degree),
+                              number(star.tets),
+                              number(one.tets_created),
+                              number(one.facets_wrapped),
+                              number(one.apex_orient_tests),
                               number(one.insphere_calls)});
     }
     const detail::TetList after = core::solid_tets(storage);
@@ -148,32 +178,34 @@ RunOutput deletion(const Suite& suite, const TierSettings& tier, const RunSpec& 
     const bool equal = detail::canonical(after) == detail::canonical(expected);
     const auto per = [count](double x) { return count > 0 ? x / static_cast<double>(count) : 0.0; };
     char hash[20];
-    std::snprintf(hash, sizeof hash, "%016llx",
+    std::snprintf(hash,
+                  sizeof hash,
+                  "%016llx",
                   static_cast<unsigned long long>(detail::canonical_hash(after)));
-    out.values = {number(std::uint64_t{points.size()}),
-                  number(std::uint64_t{full.tets.size()}),
-                  number(std::uint64_t{after.size()}),
-                  number(count),
-                  number(hull_deletions),
-                  number(delete_s),
-                  number(per(delete_s * 1e6)),
-                  number(rebuild_s),
-                  number(per(static_cast<double>(degree_sum))),
-                  number(degree_max),
-                  number(per(static_cast<double>(star_sum))),
-                  number(total.tets_created),
-                  number(total.tets_deleted),
-                  number(total.facets_wrapped),
-                  number(total.apex_orient_tests),
-                  number(total.insphere_calls),
-                  number(per(static_cast<double>(total.tets_created))),
-                  number(per(static_cast<double>(total.insphere_calls))),
-                  number(per(static_cast<double>(total.apex_orient_tests))),
-                  number(degree_sq_sum > 0
-                             ? static_cast<double>(total.apex_orient_tests) / degree_sq_sum
-                             : 0.0),
-                  equal ? "1" : "0",
-                  hash};
+    out.values = {
+        number(std::uint64_t{points.size()}),
+        number(std::uint64_t{full.tets.size()}),
+        number(std::uint64_t{after.size()}),
+        number(count),
+        number(hull_deletions),
+        number(delete_s),
+        number(per(delete_s * 1e6)),
+        number(rebuild_s),
+        number(per(static_cast<double>(degree_sum))),
+        number(degree_max),
+        number(per(static_cast<double>(star_sum))),
+        number(total.tets_created),
+        number(total.tets_deleted),
+        number(total.facets_wrapped),
+        number(total.apex_orient_tests),
+        number(total.insphere_calls),
+        number(per(static_cast<double>(total.tets_created))),
+        number(per(static_cast<double>(total.insphere_calls))),
+        number(per(static_cast<double>(total.apex_orient_tests))),
+        number(degree_sq_sum > 0 ? static_cast<double>(total.apex_orient_tests) / degree_sq_sum
+                                 : 0.0),
+        equal ? "1" : "0",
+        hash};
     return out;
 }
 

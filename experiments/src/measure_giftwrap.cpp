@@ -1,12 +1,12 @@
 #include <chrono>
 #include <cstdio>
 
+#include "canonical.h"
 #include "cavity/core/generate.h"
 #include "cavity/core/gift_wrap.h"
 #include "cavity/core/insertion_order.h"
 #include "cavity/core/triangulate.h"
 #include "cavity/experiments/measure.h"
-#include "canonical.h"
 #include "format.h"
 
 namespace cavity::experiments::measure {
@@ -20,16 +20,38 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-double ratio(double a, double b) { return b > 0 ? a / b : 0.0; }
+double ratio(double a, double b) {
+    return b > 0 ? a / b : 0.0;
+}
 
 }  // namespace
 
 std::vector<std::string> giftwrap_columns() {
-    return {"points", "tets", "hull_triangles", "gw_s", "bw_s", "gw_over_bw_time",
-            "facets_wrapped", "hull_facets", "apex_orient_tests", "gw_insphere_calls", "seed_steps",
-            "apex_per_nh", "insphere_per_nh", "apex_per_facet_per_n", "bw_orient3d", "bw_insphere",
-            "bw_orient4d", "bw_ghost", "bw_predicates", "bw_predicates_per_point", "bw_created",
-            "gw_over_bw_predicates", "same_tets", "same_hull", "hash"};
+    return {"points",
+            "tets",
+            "hull_triangles",
+            "gw_s",
+            "bw_s",
+            "gw_over_bw_time",
+            "facets_wrapped",
+            "hull_facets",
+            "apex_orient_tests",
+            "gw_insphere_calls",
+            "seed_steps",
+            "apex_per_nh",
+            "insphere_per_nh",
+            "apex_per_facet_per_n",
+            "bw_orient3d",
+            "bw_insphere",
+            "bw_orient4d",
+            "bw_ghost",
+            "bw_predicates",
+            "bw_predicates_per_point",
+            "bw_created",
+            "gw_over_bw_predicates",
+            "same_tets",
+            "same_hull",
+            "hash"};
 }
 
 RunOutput giftwrap(const Suite& suite, const RunSpec& run) {
@@ -65,7 +87,9 @@ RunOutput giftwrap(const Suite& suite, const RunSpec& run) {
     }
     const double gw_total = static_cast<double>(c.apex_orient_tests + c.insphere_calls);
     char hash[20];
-    std::snprintf(hash, sizeof hash, "%016llx",
+    std::snprintf(hash,
+                  sizeof hash,
+                  "%016llx",
                   static_cast<unsigned long long>(detail::canonical_hash(gw.tets)));
     RunOutput out;
     out.values = {number(std::uint64_t{points.size()}),

@@ -13,7 +13,9 @@ std::vector<std::string> jtets_columns() {
     return {"points", "time_s", "tets", "f0", "j_max", "closed_form_match"};
 }
 
-std::vector<std::string> jtets_j_columns() { return {"j", "f_j", "F_j", "closed_form_f_j"}; }
+std::vector<std::string> jtets_j_columns() {
+    return {"j", "f_j", "F_j", "closed_form_f_j"};
+}
 
 RunOutput jtets(const RunSpec& run) {
     const core::PointSet points = core::generate_points(run.dist, run.n, run.seed);
@@ -33,12 +35,17 @@ RunOutput jtets(const RunSpec& run) {
             continue;
         }
         j_max = j;
-        out.j_rows.push_back({number(std::uint64_t{j}), number(counts.f[j]), number(cumulative[j]),
+        out.j_rows.push_back({number(std::uint64_t{j}),
+                              number(counts.f[j]),
+                              number(cumulative[j]),
                               skew ? number(closed.f[j]) : "-"});
     }
     const std::uint64_t total = cumulative.empty() ? 0 : cumulative.back();
-    out.values = {number(std::uint64_t{points.size()}), number(time_s), number(total),
-                  number(counts.f.empty() ? 0 : counts.f[0]), number(j_max),
+    out.values = {number(std::uint64_t{points.size()}),
+                  number(time_s),
+                  number(total),
+                  number(counts.f.empty() ? 0 : counts.f[0]),
+                  number(j_max),
                   skew ? (closed.f == counts.f ? "1" : "0") : "-"};
     return out;
 }

@@ -1,7 +1,7 @@
-#include <unistd.h>
-
 #include <atomic>
 #include <filesystem>
+
+#include <unistd.h>
 
 #include "cavity/core/error.h"
 #include "cavity/core/generate.h"
@@ -25,16 +25,19 @@ struct PeerCells {
     std::string status = "unavailable";
     std::string seconds = "-", tets = "-", peak = "-", time_ratio = "-", memory_ratio = "-";
 
-    void fill(double peer_seconds, std::uint64_t peer_tets, std::uint64_t peer_peak,
+    void fill(double peer_seconds,
+              std::uint64_t peer_tets,
+              std::uint64_t peer_peak,
               const detail::ChildOutcome& cavity) {
         status = "ok";
         seconds = number(peer_seconds);
         tets = number(peer_tets);
         peak = number(peer_peak);
         time_ratio = peer_seconds > 0 ? number(cavity.report.seconds / peer_seconds) : "-";
-        memory_ratio = peer_peak > 0 ? number(static_cast<double>(cavity.peak_bytes) /
-                                              static_cast<double>(peer_peak))
-                                     : "-";
+        memory_ratio =
+            peer_peak > 0
+                ? number(static_cast<double>(cavity.peak_bytes) / static_cast<double>(peer_peak))
+                : "-";
     }
 };
 
@@ -48,12 +51,15 @@ public:
         fs::remove_all(path_);
         fs::create_directories(path_);
     }
+
     ~ScratchDirectory() {
         std::error_code ignored;
         fs::remove_all(path_, ignored);
     }
+
     ScratchDirectory(const ScratchDirectory&) = delete;
     ScratchDirectory& operator=(const ScratchDirectory&) = delete;
+
     const fs::path& path() const { return path_; }
 
 private:
@@ -63,8 +69,8 @@ private:
 }  // namespace
 
 std::vector<std::string> peers_columns() {
-    std::vector<std::string> columns{"points", "input_peak_bytes", "cavity_s", "cavity_tets",
-                                     "cavity_peak_bytes"};
+    std::vector<std::string> columns{
+        "points", "input_peak_bytes", "cavity_s", "cavity_tets", "cavity_peak_bytes"};
     for (const char* peer : {"cgal", "tetgen"}) {
         for (const char* c : {"status", "s", "tets", "peak_bytes", "time_ratio", "memory_ratio"}) {
             columns.push_back(std::string(peer) + "_" + c);
@@ -132,11 +138,18 @@ RunOutput peers(const Suite& suite, const RunSpec& run) {
     }
 
     RunOutput out;
-    out.values = {number(points), number(input.peak_bytes), number(cavity.report.seconds),
-                  number(cavity.report.tets), number(cavity.peak_bytes)};
+    out.values = {number(points),
+                  number(input.peak_bytes),
+                  number(cavity.report.seconds),
+                  number(cavity.report.tets),
+                  number(cavity.peak_bytes)};
     for (const PeerCells* peer : {&cgal, &tet}) {
-        for (const std::string* cell : {&peer->status, &peer->seconds, &peer->tets, &peer->peak,
-                                        &peer->time_ratio, &peer->memory_ratio}) {
+        for (const std::string* cell : {&peer->status,
+                                        &peer->seconds,
+                                        &peer->tets,
+                                        &peer->peak,
+                                        &peer->time_ratio,
+                                        &peer->memory_ratio}) {
             out.values.push_back(*cell);
         }
     }

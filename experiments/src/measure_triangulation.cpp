@@ -122,8 +122,9 @@ std::vector<std::string> triangulation_columns() {
                                      "hash_probes"};
     for (const char* kind : kKindNames) {
         for (int s = 0; s < predicates::kStageCount; ++s) {
-            columns.push_back(std::string(kind) + "_" +
-                              std::string(predicates::stage_name(static_cast<predicates::Stage>(s))));
+            columns.push_back(
+                std::string(kind) + "_" +
+                std::string(predicates::stage_name(static_cast<predicates::Stage>(s))));
         }
     }
     // Theorem 5.4's conflicts (Σj over created solid tetrahedra, ghosts apart), "-" when the run
@@ -202,7 +203,8 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
     }
     const core::Counters& c = result.counters;
     const auto count = static_cast<double>(points.size());
-    const std::uint64_t vertices = points.size() - result.duplicates.size() - result.redundant.size();
+    const std::uint64_t vertices =
+        points.size() - result.duplicates.size() - result.redundant.size();
     RunOutput out;
     out.values = {number(std::uint64_t{points.size()}),
                   number(vertices),
@@ -234,7 +236,9 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
         }
     }
     char hash[20];
-    std::snprintf(hash, sizeof hash, "%016llx",
+    std::snprintf(hash,
+                  sizeof hash,
+                  "%016llx",
                   static_cast<unsigned long long>(detail::canonical_hash(result.tets)));
     const auto counted = [&](std::uint64_t value) {
         return conflicts_counted ? number(value) : std::string("-");

@@ -1,15 +1,17 @@
 // Compiled only when CGAL's headers are found (experiments/CMakeLists.txt); otherwise
 // peer_cgal_absent.cpp reports the peer as unavailable.
+#include <vector>
+
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
-#include <vector>
 
 #include "peer_engines.h"
 
 namespace cavity::experiments::detail {
 
-bool cgal_available() { return true; }
+bool cgal_available() {
+    return true;
+}
 
 EngineReport cgal_delaunay(core::PointSet points) {
     using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;

@@ -4,7 +4,9 @@
 
 namespace cavity::experiments::detail {
 
-bool cgal_available() { return false; }
+bool cgal_available() {
+    return false;
+}
 
 EngineReport cgal_delaunay(core::PointSet) {
     throw core::Error("this build has no CGAL (libcgal-dev was not found at configure time)");

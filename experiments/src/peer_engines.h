@@ -24,11 +24,11 @@ EngineReport cgal_delaunay(core::PointSet points);
 /// What one TetGen run measured.
 struct TetgenRun {
     bool ok = false;
-    std::string failure;           ///< why not, when !ok
-    double cpu_seconds = 0;        ///< the whole process (reading .node, writing .ele included)
+    std::string failure;     ///< why not, when !ok
+    double cpu_seconds = 0;  ///< the whole process (reading .node, writing .ele included)
     std::optional<double> delaunay_seconds;  ///< TetGen's own "Delaunay seconds" (clock())
-    std::uint64_t tets = 0;        ///< from the .ele header
-    std::uint64_t peak_bytes = 0;  ///< the process's peak resident set size
+    std::uint64_t tets = 0;                  ///< from the .ele header
+    std::uint64_t peak_bytes = 0;            ///< the process's peak resident set size
 };
 
 /// Runs `tetgen -NF PREFIX.node` (a plain Delaunay tetrahedralization of the points: no

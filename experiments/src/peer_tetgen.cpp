@@ -37,8 +37,9 @@ TetgenRun run_tetgen(const std::filesystem::path& tetgen, const std::filesystem:
     run.peak_bytes = outcome.peak_bytes;
     run.delaunay_seconds = delaunay_seconds(log);
     if (outcome.exit_status != 0) {
-        run.failure = outcome.exit_status < 0 ? "killed by a signal"
-                                              : "exit status " + std::to_string(outcome.exit_status);
+        run.failure = outcome.exit_status < 0
+                          ? "killed by a signal"
+                          : "exit status " + std::to_string(outcome.exit_status);
         return run;
     }
     std::ifstream ele(prefix.string() + ".1.ele");

@@ -53,7 +53,9 @@ public:
     }
 
     const Point3& at(std::uint32_t i) const { return plc_.points.points[i]; }
+
     std::size_t size() const { return plc_.points.size(); }
+
     Plc take() { return std::move(plc_); }
 
 private:
@@ -113,8 +115,9 @@ Plc hull_faces(std::size_t n, std::uint64_t seed, std::string source) {
     }
     while (b.size() < n) {
         const Point3 p{dyadic(random, 4, 256), dyadic(random, 4, 256), dyadic(random, 4, 256)};
-        if (b.has(p) || std::any_of(triangles.begin(), triangles.end(),
-                                    [&](const Loop& t) { return on_plane_of(b, t, p); })) {
+        if (b.has(p) || std::any_of(triangles.begin(), triangles.end(), [&](const Loop& t) {
+                return on_plane_of(b, t, p);
+            })) {
             continue;
         }
         b.point(p);
@@ -139,9 +142,12 @@ Plc nested_boxes(std::size_t n, std::uint64_t seed, std::string source) {
             c[k] = b.point({k & 1 ? hi : lo, k & 2 ? hi : lo, k & 4 ? hi : lo});
         }
         // Corner k has bit 0 = x, bit 1 = y, bit 2 = z; each face walks its square in order.
-        for (const Loop& face : {Loop{c[0], c[1], c[3], c[2]}, Loop{c[4], c[5], c[7], c[6]},
-                                 Loop{c[0], c[1], c[5], c[4]}, Loop{c[2], c[3], c[7], c[6]},
-                                 Loop{c[0], c[2], c[6], c[4]}, Loop{c[1], c[3], c[7], c[5]}}) {
+        for (const Loop& face : {Loop{c[0], c[1], c[3], c[2]},
+                                 Loop{c[4], c[5], c[7], c[6]},
+                                 Loop{c[0], c[1], c[5], c[4]},
+                                 Loop{c[2], c[3], c[7], c[6]},
+                                 Loop{c[0], c[2], c[6], c[4]},
+                                 Loop{c[1], c[3], c[7], c[5]}}) {
             b.polygon(face);
         }
     }
@@ -197,7 +203,8 @@ Plc terrain(std::size_t n, std::uint64_t seed, std::string source) {
     };
     const std::uint64_t width = g - 1;  // in units of 1/4
     while (b.size() < n) {
-        const Point3 p{dyadic(random, width, 64) / 4, dyadic(random, width, 64) / 4,
+        const Point3 p{dyadic(random, width, 64) / 4,
+                       dyadic(random, width, 64) / 4,
                        dyadic(random, kLayers, 256) - 0.5};
         // The triangles whose xy-box can hold p: the cells around its grid square.
         const auto ci = static_cast<std::uint32_t>(p.x * 4);
@@ -278,7 +285,9 @@ Plc voxel_grid(std::size_t n, std::uint64_t seed, std::string source) {
 
 }  // namespace
 
-std::span<const PlcFamily> plc_families() { return kFamilies; }
+std::span<const PlcFamily> plc_families() {
+    return kFamilies;
+}
 
 core::Plc make_plc_family(std::string_view family, std::size_t n, std::uint64_t seed) {
     if (n < 8) {

@@ -161,20 +161,28 @@ TierSettings* tier_of_key(Suite& suite, const std::string& key, std::string_view
 
 std::string_view suite_kind_name(SuiteKind kind) {
     switch (kind) {
-        case SuiteKind::kRuns: return "runs";
-        case SuiteKind::kJTets: return "jtets";
-        case SuiteKind::kCreation: return "creation";
+        case SuiteKind::kRuns:
+            return "runs";
+        case SuiteKind::kJTets:
+            return "jtets";
+        case SuiteKind::kCreation:
+            return "creation";
         case SuiteKind::kHj:
             return "hj";
         case SuiteKind::kLocality:
             return "locality";
         case SuiteKind::kExtend:
             return "extend";
-        case SuiteKind::kDegenerate: return "degenerate";
-        case SuiteKind::kPeers: return "peers";
-        case SuiteKind::kGiftWrap: return "giftwrap";
-        case SuiteKind::kDeletion: return "deletion";
-        case SuiteKind::kCdt: return "cdt";
+        case SuiteKind::kDegenerate:
+            return "degenerate";
+        case SuiteKind::kPeers:
+            return "peers";
+        case SuiteKind::kGiftWrap:
+            return "giftwrap";
+        case SuiteKind::kDeletion:
+            return "deletion";
+        case SuiteKind::kCdt:
+            return "cdt";
     }
     return "runs";
 }
@@ -225,7 +233,8 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
         // `cap` may appear once per distribution: its identity is the key and the name.
         const std::string key = words.front();
         words.erase(words.begin());
-        const std::string identity = key == "cap" && !words.empty() ? key + " " + words.front() : key;
+        const std::string identity =
+            key == "cap" && !words.empty() ? key + " " + words.front() : key;
         if (!seen.insert(identity).second) {
             reader.fail("key '" + identity + "' given twice");
         }
@@ -307,11 +316,11 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
             reader.fail("unknown key '" + key + "'");
         }
     }
-    for (const char* required : {"question", "kind", "dist", "n.quick", "n.full", "seeds.quick",
-                                 "seeds.full"}) {
+    for (const char* required :
+         {"question", "kind", "dist", "n.quick", "n.full", "seeds.quick", "seeds.full"}) {
         if (seen.count(required) == 0) {
-            throw Error(located_message(file, std::nullopt,
-                                        std::string("missing key '") + required + "'"));
+            throw Error(
+                located_message(file, std::nullopt, std::string("missing key '") + required + "'"));
         }
     }
     const auto check_name = suite.kind == SuiteKind::kCdt ? check_plc_family : check_distribution;

@@ -41,8 +41,8 @@ struct LiftedRows {
 /// that probe the bound.
 std::optional<Sign> lifted_double_double(const LiftedRows& rows);
 
-/// The verdict of the double-double stage or stages B and C (kAdaptive) or D (kExact); none when D's expansions would outgrow
-/// their buffers. Requires inputs in kLiftedAdaptiveWindow.
+/// The verdict of the double-double stage or stages B and C (kAdaptive) or D (kExact); none when
+/// D's expansions would outgrow their buffers. Requires inputs in kLiftedAdaptiveWindow.
 std::optional<Verdict> lifted_adaptive(const LiftedRows& rows);
 
 /// The exact sign when the points are integers below 2^50 (checked by the caller; the rows are

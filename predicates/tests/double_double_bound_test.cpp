@@ -1,9 +1,9 @@
 // The double-double stage at its bound: queries whose determinant, relative to u^2 times the
 // permanent, sweeps across the acceptance threshold of the stage (58 u^2 P~ for the lifted
-// predicates, 26 u^2 P~ for orient3d), so that both its accepted and its declined answers are exercised where its own
-// rounding errors matter. An exactly degenerate integer configuration has its last point moved
-// off the origin by tiny amounts (2^-60 .. 2^-135), so the rounded differences alone are still
-// degenerate and the sign rests on the difference tails.
+// predicates, 26 u^2 P~ for orient3d), so that both its accepted and its declined answers are
+// exercised where its own rounding errors matter. An exactly degenerate integer configuration has
+// its last point moved off the origin by tiny amounts (2^-60 .. 2^-135), so the rounded differences
+// alone are still degenerate and the sign rests on the difference tails.
 //
 // For every query: an accepted sign must equal the oracle's; the stage must accept when the
 // exact determinant (cpp_int, independent of the stage) exceeds the threshold plus the stage's
@@ -209,8 +209,8 @@ struct Sweep {
             ++accepted;
             if (*stage != oracle_sign && ++mismatches <= 5) {
                 ADD_FAILURE() << "stage sign " << to_int(*stage) << ", oracle "
-                              << to_int(oracle_sign) << ", |det| / u^2 P = "
-                              << ref.det_over_bound_unit << ": " << query;
+                              << to_int(oracle_sign)
+                              << ", |det| / u^2 P = " << ref.det_over_bound_unit << ": " << query;
             }
         } else if (ref.det_over_bound_unit < threshold.accept) {
             ++declined_below;
@@ -277,12 +277,12 @@ TEST(DoubleDoubleBound, Insphere) {
         const int k = s.integer(60, 135);
         p[4] = {s.tiny(k), s.tiny(k + s.integer(0, 3)), s.tiny(k + s.integer(0, 3)), 0.0};
         const auto point = [](const WeightedPoint3& r) { return Point3{r.x, r.y, r.z}; };
-        sweep.check(hex(p),
-                    lifted_reference(p),
-                    detail::lifted_double_double(lifted_rows(p)),
-                    insphere(point(p[0]), point(p[1]), point(p[2]), point(p[3]), point(p[4])),
-                    oracle::insphere(
-                        point(p[0]), point(p[1]), point(p[2]), point(p[3]), point(p[4])));
+        sweep.check(
+            hex(p),
+            lifted_reference(p),
+            detail::lifted_double_double(lifted_rows(p)),
+            insphere(point(p[0]), point(p[1]), point(p[2]), point(p[3]), point(p[4])),
+            oracle::insphere(point(p[0]), point(p[1]), point(p[2]), point(p[3]), point(p[4])));
     }
     sweep.expect_threshold_probed();
 }
@@ -295,8 +295,8 @@ TEST(DoubleDoubleBound, Orient4d) {
     Source s(7002);
     Sweep sweep{kLifted};
     for (int q = 0; q < kQueries; ++q) {
-        const double a[3] = {double(s.integer(-9, 9)), double(s.integer(-9, 9)),
-                             double(s.integer(-9, 9))};
+        const double a[3] = {
+            double(s.integer(-9, 9)), double(s.integer(-9, 9)), double(s.integer(-9, 9))};
         std::array<WeightedPoint3, 5> p;
         for (int i = 0; i < 4; ++i) {
             const double x = s.fraction(20), y = s.fraction(20), z = s.fraction(20);

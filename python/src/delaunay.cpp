@@ -52,7 +52,8 @@ py::array_t<std::int32_t> adopt(std::vector<T>&& values, std::vector<py::ssize_t
     static_assert(sizeof(T) % sizeof(std::int32_t) == 0);
     auto* heap = new std::vector<T>(std::move(values));
     py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<T>*>(p); });
-    py::array_t<std::int32_t> array(shape, reinterpret_cast<const std::int32_t*>(heap->data()), owner);
+    py::array_t<std::int32_t> array(
+        shape, reinterpret_cast<const std::int32_t*>(heap->data()), owner);
     array.attr("setflags")(py::arg("write") = false);
     return array;
 }
@@ -159,7 +160,10 @@ public:
     py::dict stats_;
 
 private:
-    void publish(Built&& b, std::uint64_t seed, const std::string& order, const std::string& locate,
+    void publish(Built&& b,
+                 std::uint64_t seed,
+                 const std::string& order,
+                 const std::string& locate,
                  const std::string& storage) {
         const auto n = static_cast<py::ssize_t>(input_.size());
         py::array_t<double> points({n, py::ssize_t{3}});

@@ -49,8 +49,9 @@ DoubleArray require_rows(const py::handle& array, const char* name, py::ssize_t 
             const double x = data[row * width + col];
             if (!std::isfinite(x)) {
                 throw py::value_error(std::string(name) + " row " + std::to_string(row) +
-                                      " has a non-finite value (" + (std::isnan(x) ? "nan" : "inf") +
-                                      ") in column " + std::to_string(col));
+                                      " has a non-finite value (" +
+                                      (std::isnan(x) ? "nan" : "inf") + ") in column " +
+                                      std::to_string(col));
             }
         }
     }

@@ -1,9 +1,9 @@
 #pragma once
 
-#include <pybind11/numpy.h>
-
 #include <cstddef>
 #include <vector>
+
+#include <pybind11/numpy.h>
 
 #include "cavity/core/point_set.h"
 

@@ -1,11 +1,11 @@
 // cavity.orient3d / insphere / orient4d: the exact predicates over arrays of queries.
 
-#include <pybind11/numpy.h>
-#include <pybind11/pybind11.h>
-
 #include <array>
 #include <cstdint>
 #include <string>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
 
 #include "bindings.h"
 #include "cavity/predicates/insphere.h"
@@ -74,8 +74,8 @@ py::array_t<std::int8_t> evaluate(const std::array<py::handle, Arity>& args, Pre
         for (std::size_t i = 0; i < Arity; ++i) {
             p[i] = base[i] + k * stride[i];
         }
-        out[k] = static_cast<std::int8_t>(predicates::to_int(std::apply(
-            [&](const auto*... pts) { return predicate(*pts...); }, p)));
+        out[k] = static_cast<std::int8_t>(predicates::to_int(
+            std::apply([&](const auto*... pts) { return predicate(*pts...); }, p)));
     }
     return signs;
 }
@@ -88,11 +88,13 @@ void bind_predicates(py::module_& m) {
     m.def(
         "orient3d",
         [](const py::handle& a, const py::handle& b, const py::handle& c, const py::handle& d) {
-            return evaluate<4, Point3>({a, b, c, d}, [](const auto&... p) {
-                return predicates::orient3d(p...);
-            });
+            return evaluate<4, Point3>({a, b, c, d},
+                                       [](const auto&... p) { return predicates::orient3d(p...); });
         },
-        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"),
+        py::arg("a"),
+        py::arg("b"),
+        py::arg("c"),
+        py::arg("d"),
         R"doc(Exact sign of det[a-d; b-d; c-d] for each query, as int8 (-1, 0, +1).
 
 +1 when a, b, c, d are positively oriented: d lies below the plane of a, b, c seen with a, b, c
@@ -101,13 +103,19 @@ per query) or a (3,) point used for every query; with only (3,) arguments the re
 Exact for every finite double; ValueError for NaN, infinity or a wrong shape.)doc");
     m.def(
         "insphere",
-        [](const py::handle& a, const py::handle& b, const py::handle& c, const py::handle& d,
+        [](const py::handle& a,
+           const py::handle& b,
+           const py::handle& c,
+           const py::handle& d,
            const py::handle& e) {
-            return evaluate<5, Point3>({a, b, c, d, e}, [](const auto&... p) {
-                return predicates::insphere(p...);
-            });
+            return evaluate<5, Point3>({a, b, c, d, e},
+                                       [](const auto&... p) { return predicates::insphere(p...); });
         },
-        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("e"),
+        py::arg("a"),
+        py::arg("b"),
+        py::arg("c"),
+        py::arg("d"),
+        py::arg("e"),
         R"doc(Exact insphere sign for each query, as int8 (-1, 0, +1).
 
 +1 when e lies inside the circumsphere of a, b, c, d if they are positively oriented (the sign
@@ -115,13 +123,19 @@ flips when they are negatively oriented), 0 when the five points are cospherical
 coplanar. Arguments as for orient3d.)doc");
     m.def(
         "orient4d",
-        [](const py::handle& a, const py::handle& b, const py::handle& c, const py::handle& d,
+        [](const py::handle& a,
+           const py::handle& b,
+           const py::handle& c,
+           const py::handle& d,
            const py::handle& e) {
-            return evaluate<5, WeightedPoint3>({a, b, c, d, e}, [](const auto&... p) {
-                return predicates::orient4d(p...);
-            });
+            return evaluate<5, WeightedPoint3>(
+                {a, b, c, d, e}, [](const auto&... p) { return predicates::orient4d(p...); });
         },
-        py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("e"),
+        py::arg("a"),
+        py::arg("b"),
+        py::arg("c"),
+        py::arg("d"),
+        py::arg("e"),
         R"doc(Exact power test for weighted points [x, y, z, w], as int8 (-1, 0, +1).
 
 Sign of det[p-e, h_p-h_e] over p = a, b, c, d with lifted heights h = x^2+y^2+z^2-w computed

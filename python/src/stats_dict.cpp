@@ -38,7 +38,8 @@ py::dict counters_dict(const core::Counters& c) {
     for (std::size_t k = 0; k < kKinds.size(); ++k) {
         py::dict per_stage;
         for (int s = 0; s < predicates::kStageCount; ++s) {
-            per_stage[py::str(std::string(predicates::stage_name(static_cast<predicates::Stage>(s))))] =
+            per_stage[py::str(
+                std::string(predicates::stage_name(static_cast<predicates::Stage>(s))))] =
                 c.stage_calls[k][static_cast<std::size_t>(s)];
         }
         stages[kKinds[k]] = per_stage;

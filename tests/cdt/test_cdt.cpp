@@ -1,17 +1,17 @@
 // CDTs of PLCs (Cheng, Dey & Shewchuk §5.8): the .poly reader, edge protection, flip-based
 // polygon insertion, and the independent validator.
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <numeric>
 
+#include <gtest/gtest.h>
+
 #include "cavity/core/cdt.h"
 #include "cavity/core/cdt_validate.h"
-#include "plc_builders.h"
 #include "cavity/core/error.h"
 #include "cavity/core/triangulate.h"
+#include "plc_builders.h"
 
 namespace cavity::core {
 namespace {
@@ -58,7 +58,8 @@ TEST(ReadPoly, FacetsHolesSegmentsAndSeparateNode) {
 }
 
 TEST(ReadPoly, ErrorsNameFileAndLine) {
-    const auto bad_corner = write_temp("bad1.poly", "3 3\n0 0 0 0\n1 1 0 0\n2 0 1 0\n1\n1\n3 0 1 7\n");
+    const auto bad_corner =
+        write_temp("bad1.poly", "3 3\n0 0 0 0\n1 1 0 0\n2 0 1 0\n1\n1\n3 0 1 7\n");
     try {
         read_poly(bad_corner);
         FAIL() << "accepted a corner that is not a point";
@@ -76,30 +77,48 @@ TEST(ReadPoly, ErrorsNameFileAndLine) {
 }
 
 std::vector<Point3> box_corners(double x, double y, double z0, double z1) {
-    return {{0, 0, z0}, {x, 0, z0}, {x, y, z0}, {0, y, z0}, {0, 0, z1}, {x, 0, z1}, {x, y, z1}, {0, y, z1}};
+    return {{0, 0, z0},
+            {x, 0, z0},
+            {x, y, z0},
+            {0, y, z0},
+            {0, 0, z1},
+            {x, 0, z1},
+            {x, y, z1},
+            {0, y, z1}};
 }
 
 TEST(Cdt, CubeWithInteriorPointsAndMiddleSquare) {
     auto pts = box_corners(4, 4, 0, 4);
-    const std::vector<Point3> mid{{0, 0, 2.03125}, {4, 0, 2.03125}, {4, 4, 2.03125}, {0, 4, 2.03125}};
+    const std::vector<Point3> mid{
+        {0, 0, 2.03125}, {4, 0, 2.03125}, {4, 4, 2.03125}, {0, 4, 2.03125}};
     pts.insert(pts.end(), mid.begin(), mid.end());
     const auto inner = dyadic_grid_points(40, 7);
     pts.insert(pts.end(), inner.begin(), inner.end());
     const Plc plc = make_plc(pts, {{{0, 1, 2, 3}}, {{4, 5, 6, 7}}, {{8, 9, 10, 11}}});
     const Cdt cdt = checked_cdt(plc, true);
-    EXPECT_GT(cdt.counters.flips.flip_count(FlipKind::k23) + cdt.counters.flips.flip_count(FlipKind::k32), 0u);
+    EXPECT_GT(
+        cdt.counters.flips.flip_count(FlipKind::k23) + cdt.counters.flips.flip_count(FlipKind::k32),
+        0u);
     // Proposition 5.5: fewer than m^2 flips per polygon.
     std::uint64_t flips = 0;
     for (auto f : cdt.counters.flips.flips) {
         flips += f;
     }
-    EXPECT_LT(flips, cdt.counters.max_region_vertices * cdt.counters.max_region_vertices * cdt.plc.facets.size());
+    EXPECT_LT(flips,
+              cdt.counters.max_region_vertices * cdt.counters.max_region_vertices *
+                  cdt.plc.facets.size());
 }
 
 TEST(Cdt, BoxWithAHole) {
     auto pts = box_corners(4, 4, 0, 4);
-    const std::vector<Point3> ring{{0, 0, 1.96875}, {4, 0, 1.96875}, {4, 4, 1.96875}, {0, 4, 1.96875},
-                                   {1, 1, 1.96875}, {3, 1, 1.96875}, {3, 3, 1.96875}, {1, 3, 1.96875}};
+    const std::vector<Point3> ring{{0, 0, 1.96875},
+                                   {4, 0, 1.96875},
+                                   {4, 4, 1.96875},
+                                   {0, 4, 1.96875},
+                                   {1, 1, 1.96875},
+                                   {3, 1, 1.96875},
+                                   {3, 3, 1.96875},
+                                   {1, 3, 1.96875}};
     pts.insert(pts.end(), ring.begin(), ring.end());
     const auto inner = dyadic_grid_points(30, 11);
     pts.insert(pts.end(), inner.begin(), inner.end());
@@ -162,11 +181,11 @@ TEST(Cdt, NeedsProtection) {
     EXPECT_FALSE(validate_cdt(cdt.plc, delaunay(cdt.plc)).ok());
 }
 
-/// Schönhardt's polyhedron: a twisted triangular prism whose side quadrilaterals are cut along their
-/// reflex diagonals. It has no tetrahedralization, hence no CDT without extra vertices.
+/// Schönhardt's polyhedron: a twisted triangular prism whose side quadrilaterals are cut along
+/// their reflex diagonals. It has no tetrahedralization, hence no CDT without extra vertices.
 TEST(Cdt, Schoenhardt) {
-    const std::vector<Point3> pts{{4, 0, 0},      {-2, 3.5, 0},    {-2, -3.5, 0},
-                                  {3.5, 2, 4},    {-3.5, 2, 4},    {0, -4, 4}};
+    const std::vector<Point3> pts{
+        {4, 0, 0}, {-2, 3.5, 0}, {-2, -3.5, 0}, {3.5, 2, 4}, {-3.5, 2, 4}, {0, -4, 4}};
     Plc hull = make_plc(pts, {});
     // The convex diagonals are hull edges; the polyhedron takes the others.
     std::vector<std::vector<std::vector<std::uint32_t>>> facets{{{0, 1, 2}}, {{3, 4, 5}}};

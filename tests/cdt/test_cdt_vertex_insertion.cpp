@@ -13,12 +13,12 @@
 
 #include "canonical.h"
 #include "cavity/core/cdt_validate.h"
-#include "plc_builders.h"
 #include "cavity/core/cdt_vertex_insertion.h"
 #include "cavity/core/complex_from_tets.h"
 #include "cavity/core/error.h"
 #include "cavity/core/random.h"
 #include "cavity/core/write_poly.h"
+#include "plc_builders.h"
 
 namespace cavity::core {
 namespace {

@@ -1,18 +1,18 @@
 // Bistellar flips on hand-built configurations and on random Delaunay triangulations: every flip
 // keeps the complex valid (check_complex), refuses configurations where the new tetrahedra would
 // be inverted, and the inverse flip restores the original tetrahedra.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <numeric>
 
+#include <gtest/gtest.h>
+
+#include "canonical.h"
 #include "cavity/core/complex_from_tets.h"
 #include "cavity/core/flips.h"
 #include "cavity/core/generate.h"
 #include "cavity/core/random.h"
 #include "cavity/core/star.h"
 #include "cavity/core/triangulate.h"
-#include "canonical.h"
 #include "cavity/predicates/orient3d.h"
 
 namespace cavity::core {

@@ -1,16 +1,16 @@
 // Gift-wrapping (§5.6) against Bowyer-Watson: the same tetrahedra, one by one, on the degenerate
 // corpus, where only the shared symbolic perturbation makes the triangulation unique.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <numeric>
 #include <string>
 
+#include <gtest/gtest.h>
+
+#include "canonical.h"
 #include "cavity/core/error.h"
 #include "cavity/core/generate.h"
 #include "cavity/core/gift_wrap.h"
 #include "cavity/core/triangulate.h"
-#include "canonical.h"
 #include "cavity/core/validate.h"
 
 namespace cavity::core {
@@ -20,7 +20,9 @@ using Tets = std::vector<std::array<std::uint32_t, 4>>;
 
 using test::canonical;
 
-Triangulation bowyer_watson(const PointSet& ps) { return test::triangulate_in_input_order(ps); }
+Triangulation bowyer_watson(const PointSet& ps) {
+    return test::triangulate_in_input_order(ps);
+}
 
 void expect_same_as_bowyer_watson(const PointSet& ps) {
     const GiftWrapResult wrapped = gift_wrap_delaunay(ps);
@@ -46,16 +48,11 @@ TEST_P(GiftWrapCorpus, SameTetrahedraAsBowyerWatson) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Degenerate,
-                         GiftWrapCorpus,
-                         ::testing::Values("grid",
-                                           "cospherical",
-                                           "skew-lines",
-                                           "moment",
-                                           "paraboloid",
-                                           "layers",
-                                           "ball",
-                                           "cube"));
+INSTANTIATE_TEST_SUITE_P(
+    Degenerate,
+    GiftWrapCorpus,
+    ::testing::Values(
+        "grid", "cospherical", "skew-lines", "moment", "paraboloid", "layers", "ball", "cube"));
 
 TEST(GiftWrap, WeightedSetWithRedundantPoints) {
     const PointSet ps = generate_points("cube", 200, 5, parse_weight_spec("uniform:0:0.05"));

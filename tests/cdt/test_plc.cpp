@@ -9,12 +9,12 @@
 
 #include "cavity/core/cdt.h"
 #include "cavity/core/cdt_validate.h"
-#include "plc_builders.h"
 #include "cavity/core/edge_protection.h"
 #include "cavity/core/error.h"
 #include "cavity/core/plc_validity.h"
 #include "cavity/core/random.h"
 #include "cavity/core/triangulate.h"
+#include "plc_builders.h"
 // White-box: the region rule is internal to the core.
 #include "../../core/src/exact_plane.h"
 

@@ -12,12 +12,12 @@
 
 #include "cavity/core/cdt.h"
 #include "cavity/core/cdt_validate.h"
-#include "plc_builders.h"
 #include "cavity/core/complex_from_tets.h"
 #include "cavity/core/error.h"
 #include "cavity/core/random.h"
 #include "cavity/core/triangulate.h"
 #include "cavity/predicates/orient3d.h"
+#include "plc_builders.h"
 
 namespace cavity::core {
 namespace {

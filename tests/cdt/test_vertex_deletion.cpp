@@ -1,19 +1,19 @@
 // Vertex deletion by gift-wrapping the star: after every deletion the complex equals the
 // triangulation rebuilt by Bowyer-Watson without the deleted points, on random and degenerate
 // sets, hull vertices included.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <numeric>
 #include <string>
 
+#include <gtest/gtest.h>
+
+#include "canonical.h"
 #include "cavity/core/complex_from_tets.h"
 #include "cavity/core/error.h"
 #include "cavity/core/generate.h"
 #include "cavity/core/random.h"
 #include "cavity/core/star.h"
 #include "cavity/core/triangulate.h"
-#include "canonical.h"
 #include "cavity/core/vertex_deletion.h"
 
 namespace cavity::core {
@@ -23,7 +23,9 @@ using Tets = std::vector<std::array<std::uint32_t, 4>>;
 
 using test::canonical;
 
-Triangulation bowyer_watson(const PointSet& ps) { return test::triangulate_in_input_order(ps); }
+Triangulation bowyer_watson(const PointSet& ps) {
+    return test::triangulate_in_input_order(ps);
+}
 
 /// Bowyer-Watson on the points not deleted, mapped back to the original indices. Dropping points
 /// keeps the relative order of the others' keys, so the perturbation decides the same way.
@@ -54,7 +56,10 @@ Triangulation rebuilt_without(const PointSet& ps, const std::vector<bool>& gone)
 /// Deletes `count` vertices one by one from the live complex (every third one a hull vertex),
 /// comparing with the rebuilt triangulation after each. Counts in `resurfaced` the submerged
 /// (weighted redundant) points that became vertices.
-void delete_and_compare(const PointSet& ps, int count, std::uint64_t seed, std::size_t& resurfaced) {
+void delete_and_compare(const PointSet& ps,
+                        int count,
+                        std::uint64_t seed,
+                        std::size_t& resurfaced) {
     const Triangulation full = bowyer_watson(ps);
     const Geometry geometry = geometry_by_index(ps);
     ArrayStorage storage = complex_from_tets(full.tets);
@@ -85,8 +90,9 @@ void delete_and_compare(const PointSet& ps, int count, std::uint64_t seed, std::
         hull_deletions += hull ? 1 : 0;
         gone[v] = true;
         resurfaced += std::erase_if(submerged, [&](VertexId s) {
-            return std::any_of(fresh.begin(), fresh.end(),
-                               [&](TetId t) { return slot_of(storage.vertices(t), s) >= 0; });
+            return std::any_of(fresh.begin(), fresh.end(), [&](TetId t) {
+                return slot_of(storage.vertices(t), s) >= 0;
+            });
         });
         const auto problems = check_complex(storage, geometry);
         ASSERT_TRUE(problems.empty()) << problems.front();
@@ -106,16 +112,11 @@ TEST_P(DeletionCorpus, EqualsRebuildAfterEachDeletion) {
     delete_and_compare(generate_points(GetParam(), 150, 3), 70, 17, resurfaced);
 }
 
-INSTANTIATE_TEST_SUITE_P(RandomAndDegenerate,
-                         DeletionCorpus,
-                         ::testing::Values("ball",
-                                           "cube",
-                                           "grid",
-                                           "cospherical",
-                                           "skew-lines",
-                                           "moment",
-                                           "paraboloid",
-                                           "layers"));
+INSTANTIATE_TEST_SUITE_P(
+    RandomAndDegenerate,
+    DeletionCorpus,
+    ::testing::Values(
+        "ball", "cube", "grid", "cospherical", "skew-lines", "moment", "paraboloid", "layers"));
 
 TEST(VertexDeletion, WeightedDeletionUncoversSubmergedPoints) {
     const PointSet ps = generate_points("cube", 150, 9, parse_weight_spec("uniform:0:0.08"));
@@ -126,7 +127,8 @@ TEST(VertexDeletion, WeightedDeletionUncoversSubmergedPoints) {
 
 TEST(VertexDeletion, WeightedGridWithEqualWeights) {
     std::size_t resurfaced = 0;
-    delete_and_compare(generate_points("grid", 125, 2, parse_weight_spec("equal:0.5")), 40, 8, resurfaced);
+    delete_and_compare(
+        generate_points("grid", 125, 2, parse_weight_spec("equal:0.5")), 40, 8, resurfaced);
 }
 
 TEST(VertexDeletion, BatchCallEqualsRebuild) {

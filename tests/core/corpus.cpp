@@ -84,7 +84,8 @@ PointSet mixed_magnitudes(std::size_t n) {
     std::vector<Point3> points;
     for (std::size_t i = 0; i < n; ++i) {
         const auto scale = [&] { return scales[random.below(6)]; };
-        points.push_back({scale() * random.uniform01(), scale() * random.uniform01(),
+        points.push_back({scale() * random.uniform01(),
+                          scale() * random.uniform01(),
                           scale() * random.uniform01()});
     }
     return from(std::move(points), "mixed magnitudes");
@@ -100,7 +101,8 @@ std::vector<CorpusCase> degenerate_corpus() {
     corpus.push_back({"paraboloid", generated("paraboloid", 100), -1});
     corpus.push_back({"cube_corners", from(cube_corners(), "cube corners"), -1});
     corpus.push_back({"layers", generated("layers", 200), -1});
-    corpus.push_back({"duplicates", from(with_duplicates(), "grid with duplicates"), 6 * 2 * 2 * 2});
+    corpus.push_back(
+        {"duplicates", from(with_duplicates(), "grid with duplicates"), 6 * 2 * 2 * 2});
     corpus.push_back({"grid_ulp", ulp_moved(generated("grid", 64)), -1});
     corpus.push_back({"cospherical_ulp", ulp_moved(generated("cospherical", 100)), -1});
     corpus.push_back({"grid_1e300", scaled(generated("grid", 64), 1e300), 6 * 3 * 3 * 3});

@@ -1,10 +1,10 @@
 // Inputs with no 3D triangulation get an Error naming why (the affine dimension).
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numeric>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "cavity/core/error.h"
 #include "cavity/core/triangulate.h"
@@ -26,8 +26,8 @@ std::string error_of(const std::vector<predicates::Point3>& points) {
 }
 
 TEST(Errors, CoplanarNamesDimensionTwo) {
-    const std::vector<predicates::Point3> points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0},
-                                                 {1, 1, 0}, {2, 5, 0}, {0.1, 0.3, 0}};
+    const std::vector<predicates::Point3> points{
+        {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 5, 0}, {0.1, 0.3, 0}};
     EXPECT_NE(error_of(points).find("affine dimension 2"), std::string::npos) << error_of(points);
 }
 
@@ -50,7 +50,8 @@ TEST(Errors, CollinearNamesDimensionOne) {
 }
 
 TEST(Errors, FewerThanFourDistinctPoints) {
-    const std::vector<predicates::Point3> points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {-0.0, 0, 0}};
+    const std::vector<predicates::Point3> points{
+        {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {-0.0, 0, 0}};
     EXPECT_NE(error_of(points).find("fewer than 4 distinct points"), std::string::npos)
         << error_of(points);
     EXPECT_NE(error_of({}).find("no points"), std::string::npos);
@@ -65,7 +66,8 @@ TEST(Errors, SequenceMustCoverThePoints) {
 
 TEST(Errors, NonFiniteCoordinatesNameThePoint) {
     for (double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
-        std::vector<predicates::Point3> points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+        std::vector<predicates::Point3> points{
+            {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
         points[3].y = bad;
         EXPECT_NE(error_of(points).find("point 3 has a non-finite"), std::string::npos)
             << error_of(points);

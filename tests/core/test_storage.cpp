@@ -1,9 +1,9 @@
 // The two storages behind the chapter's interface (Figure 5.1): AddTetrahedron, DeleteTetrahedron,
 // Adjacent, Adjacent2Vertex.
 
-#include <gtest/gtest.h>
-
 #include <map>
+
+#include <gtest/gtest.h>
 
 #include "cavity/core/array_storage.h"
 #include "cavity/core/face_hash_storage.h"

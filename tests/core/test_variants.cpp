@@ -2,9 +2,9 @@
 // is valid (checked exactly by core::validate) and identical across variants, because the
 // symbolic perturbation makes the triangulation unique.
 
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "canonical.h"
 #include "cavity/core/generate.h"
@@ -25,8 +25,11 @@ class Variants : public ::testing::TestWithParam<CorpusCase> {};
 TEST_P(Variants, ValidAndIdenticalForEveryOrderLocatorAndStorage) {
     const CorpusCase& c = GetParam();
     std::vector<std::array<std::uint32_t, 4>> reference;
-    for (OrderKind order : {OrderKind::kInput, OrderKind::kRandom, OrderKind::kBrio,
-                            OrderKind::kHilbert, OrderKind::kZOrder}) {
+    for (OrderKind order : {OrderKind::kInput,
+                            OrderKind::kRandom,
+                            OrderKind::kBrio,
+                            OrderKind::kHilbert,
+                            OrderKind::kZOrder}) {
         for (LocateKind locate : {LocateKind::kWalk,
                                   LocateKind::kConflictGraph,
                                   LocateKind::kFullConflictGraph,
@@ -35,7 +38,8 @@ TEST_P(Variants, ValidAndIdenticalForEveryOrderLocatorAndStorage) {
                 core::OrderOptions order_options;
                 order_options.kind = order;
                 order_options.seed = 11;
-                const auto sequence = core::make_insertion_order(c.points.points, order_options).sequence;
+                const auto sequence =
+                    core::make_insertion_order(c.points.points, order_options).sequence;
                 core::TriangulateOptions options;
                 options.locate = locate;
                 options.storage = storage;
@@ -45,8 +49,8 @@ TEST_P(Variants, ValidAndIdenticalForEveryOrderLocatorAndStorage) {
                                             " locate " + std::to_string(int(locate)) + " storage " +
                                             std::to_string(int(storage));
                 const auto report = core::validate(c.points, tri.tets);
-                ASSERT_TRUE(report.ok()) << variant << ": "
-                                         << (report.problems.empty() ? "" : report.problems[0]);
+                ASSERT_TRUE(report.ok())
+                    << variant << ": " << (report.problems.empty() ? "" : report.problems[0]);
                 EXPECT_EQ(report.duplicates, tri.duplicates.size()) << variant;
                 if (c.expected_tets >= 0) {
                     EXPECT_EQ(static_cast<long long>(tri.tets.size()), c.expected_tets) << variant;
@@ -69,7 +73,9 @@ TEST_P(Variants, ValidAndIdenticalForEveryOrderLocatorAndStorage) {
 INSTANTIATE_TEST_SUITE_P(DegenerateCorpus,
                          Variants,
                          ::testing::ValuesIn(degenerate_corpus()),
-                         [](const ::testing::TestParamInfo<CorpusCase>& p) { return p.param.name; });
+                         [](const ::testing::TestParamInfo<CorpusCase>& p) {
+                             return p.param.name;
+                         });
 
 TEST(Variants, UniformPointsMatchAcrossStoragesAndLocators) {
     const auto points = core::generate_points("ball", 3000, 3, core::WeightSpec{});

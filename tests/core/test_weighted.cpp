@@ -1,9 +1,9 @@
 // Weighted Delaunay: equal weights give the unweighted triangulation; random weights give a valid
 // regular triangulation, the same for every order and locator, with redundant points reported.
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+
+#include <gtest/gtest.h>
 
 #include "canonical.h"
 #include "cavity/core/generate.h"
@@ -41,9 +41,11 @@ TEST(Weighted, EqualWeightsGiveTheUnweightedTriangulation) {
         core::PointSet weighted = c.points;
         weighted.weights.assign(weighted.size(), 0.0);
         const auto plain = build(c.points, core::OrderKind::kBrio, core::LocateKind::kWalk);
-        EXPECT_EQ(build(weighted, core::OrderKind::kRandom, core::LocateKind::kWalk), plain) << c.name;
+        EXPECT_EQ(build(weighted, core::OrderKind::kRandom, core::LocateKind::kWalk), plain)
+            << c.name;
         weighted.weights.assign(weighted.size(), 2.5);
-        EXPECT_EQ(build(weighted, core::OrderKind::kHilbert, core::LocateKind::kConflictGraph), plain)
+        EXPECT_EQ(build(weighted, core::OrderKind::kHilbert, core::LocateKind::kConflictGraph),
+                  plain)
             << c.name;
     }
 }
@@ -56,9 +58,11 @@ TEST(Weighted, RandomWeightsValidAndOrderIndependent) {
         spec.b = std::string(dist) == "cube" ? 0.01 : 3.0;
         const auto points = core::generate_points(dist, 400, 9, spec);
         core::Triangulation first;
-        const auto reference = build(points, core::OrderKind::kBrio, core::LocateKind::kWalk, &first);
+        const auto reference =
+            build(points, core::OrderKind::kBrio, core::LocateKind::kWalk, &first);
         const auto report = core::validate(points, first.tets);
-        ASSERT_TRUE(report.ok()) << dist << ": " << (report.problems.empty() ? "" : report.problems[0]);
+        ASSERT_TRUE(report.ok()) << dist << ": "
+                                 << (report.problems.empty() ? "" : report.problems[0]);
         EXPECT_EQ(report.redundant, first.redundant.size()) << dist;
         for (auto order : {core::OrderKind::kInput, core::OrderKind::kRandom}) {
             for (auto locate : {core::LocateKind::kWalk,
@@ -83,8 +87,10 @@ TEST(Weighted, HeavyPointSubmergesItsNeighboursAndTheyAreReported) {
     ASSERT_FALSE(tri.redundant.empty());
     for (std::uint32_t r : tri.redundant) {
         const auto& p = points.points[r];
-        const double d2 = (p.x - 0.5) * (p.x - 0.5) + (p.y - 0.5) * (p.y - 0.5) + (p.z - 0.5) * (p.z - 0.5);
-        EXPECT_LT(d2, 0.05) << "point " << r << " is reported redundant but is outside the heavy ball";
+        const double d2 =
+            (p.x - 0.5) * (p.x - 0.5) + (p.y - 0.5) * (p.y - 0.5) + (p.z - 0.5) * (p.z - 0.5);
+        EXPECT_LT(d2, 0.05) << "point " << r
+                            << " is reported redundant but is outside the heavy ball";
     }
     EXPECT_TRUE(core::validate(points, tri.tets).ok());
 }

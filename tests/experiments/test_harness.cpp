@@ -1,8 +1,8 @@
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <gtest/gtest.h>
 
 #include "cavity/core/error.h"
 #include "cavity/experiments/harness.h"
@@ -16,14 +16,16 @@ class Harness : public ::testing::Test {
 protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
-               ("cavity_harness_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+               ("cavity_harness_" +
+                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
         std::ofstream(dir_ / "tiny.suite") << "question tiny\nkind runs\ndist cube skew-lines\n"
                                               "n.quick 60 90\nn.full 60\nseeds.quick 1 2\n"
                                               "seeds.full 1\norder random brio\nvalidate yes\n";
-        std::ofstream(dir_ / "fj.suite") << "question fj\nkind jtets\ndist skew-lines\n"
-                                            "n.quick 12 16\nn.full 12\nseeds.quick 1\nseeds.full 1\n";
+        std::ofstream(dir_ / "fj.suite")
+            << "question fj\nkind jtets\ndist skew-lines\n"
+               "n.quick 12 16\nn.full 12\nseeds.quick 1\nseeds.full 1\n";
     }
 
     void TearDown() override { fs::remove_all(dir_); }
@@ -78,7 +80,8 @@ TEST_F(Harness, ShardsMergeIntoTheUnshardedTable) {
     }
     EXPECT_TRUE(fs::exists(dir_ / "sharded" / "tiny.meta.json"));
     EXPECT_FALSE(fs::exists(dir_ / "sharded" / "tiny.part-1-of-3.csv"));
-    EXPECT_EQ(stable_columns(dir_ / "whole" / "tiny.csv"), stable_columns(dir_ / "sharded" / "tiny.csv"));
+    EXPECT_EQ(stable_columns(dir_ / "whole" / "tiny.csv"),
+              stable_columns(dir_ / "sharded" / "tiny.csv"));
 }
 
 TEST_F(Harness, APartialMergeResumesIntoTheWholeTable) {

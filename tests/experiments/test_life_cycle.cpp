@@ -1,7 +1,7 @@
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <limits>
+
+#include <gtest/gtest.h>
 
 #include "cavity/core/generate.h"
 #include "cavity/core/insertion_order.h"
@@ -83,7 +83,8 @@ std::vector<TetLife> predicted_lives(const core::PointSet& points,
     return lives;
 }
 
-std::vector<std::tuple<Tet, std::uint64_t, std::uint64_t>> solid(const std::vector<TetLife>& lives) {
+std::vector<std::tuple<Tet, std::uint64_t, std::uint64_t>> solid(
+    const std::vector<TetLife>& lives) {
     std::vector<std::tuple<Tet, std::uint64_t, std::uint64_t>> out;
     for (const TetLife& life : lives) {
         if (!life.ghost) {
@@ -102,7 +103,8 @@ TEST(LifeCycle, CreatedTetrahedraAreExactlyThoseWhoseVerticesPrecedeAllStoppers)
             options.kind = core::parse_order_kind(order);
             options.seed = seed + 100;
             const auto sequence = core::make_insertion_order(points.points, options).sequence;
-            const Observed r = observe(points, sequence, core::LocateKind::kWalk, core::StorageKind::kArray);
+            const Observed r =
+                observe(points, sequence, core::LocateKind::kWalk, core::StorageKind::kArray);
             const auto observed = solid(r.lives);
             const auto predicted = solid(predicted_lives(points, r.inserted));
             ASSERT_FALSE(observed.empty());
@@ -118,7 +120,8 @@ TEST(LifeCycle, WalkAndConflictGraphCreateTheSameTetrahedra) {
         options.kind = core::OrderKind::kRandom;
         options.seed = seed;
         const auto sequence = core::make_insertion_order(points.points, options).sequence;
-        const Observed walk = observe(points, sequence, core::LocateKind::kWalk, core::StorageKind::kArray);
+        const Observed walk =
+            observe(points, sequence, core::LocateKind::kWalk, core::StorageKind::kArray);
         const Observed graph =
             observe(points, sequence, core::LocateKind::kConflictGraph, core::StorageKind::kHash);
         EXPECT_EQ(walk.inserted, graph.inserted);

@@ -1,10 +1,10 @@
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "cavity/core/error.h"
 #include "cavity/experiments/harness.h"
@@ -25,8 +25,9 @@ TEST(Peers, ShippedSuiteParses) {
 }
 
 TEST(Peers, CapLeavesOutLargerSizesAndIsCheckedPerLine) {
-    const std::string head = "question q\nkind peers\ndist cube cospherical\nn.quick 10 100\n"
-                             "n.full 10\nseeds.quick 1\nseeds.full 1\n";
+    const std::string head =
+        "question q\nkind peers\ndist cube cospherical\nn.quick 10 100\n"
+        "n.full 10\nseeds.quick 1\nseeds.full 1\n";
     const Suite suite = parse_suite(head + "cap cospherical 50\n", "p.suite", "p");
     // cube at 10 and 100, cospherical at 10 only.
     EXPECT_EQ(enumerate_runs(suite, suite.quick).size(), 3u);
@@ -40,7 +41,8 @@ TEST(Peers, CapLeavesOutLargerSizesAndIsCheckedPerLine) {
     };
     EXPECT_NE(error_of("cap cube 5\ncap cube 6\n").find("p.suite:9: key 'cap cube' given twice"),
               std::string::npos);
-    EXPECT_NE(error_of("cap nowhere 5\n").find("p.suite:8: unknown distribution"), std::string::npos);
+    EXPECT_NE(error_of("cap nowhere 5\n").find("p.suite:8: unknown distribution"),
+              std::string::npos);
     EXPECT_NE(error_of("cap cube\n").find("p.suite:8: cap takes a distribution and a size"),
               std::string::npos);
     EXPECT_EQ(error_of("cap cube 5\ncap grid 6\n"), "");
@@ -88,7 +90,8 @@ TEST(Peers, TinyRunWritesOneRowPerInputWithEveryAvailablePeer) {
         SCOPED_TRACE(row.at("dist"));
         EXPECT_GT(std::stoull(row.at("cavity_tets")), 0u);
         EXPECT_GT(std::stoull(row.at("cavity_peak_bytes")), 0u);
-        EXPECT_GE(std::stoull(row.at("cavity_peak_bytes")), std::stoull(row.at("input_peak_bytes")) / 2);
+        EXPECT_GE(std::stoull(row.at("cavity_peak_bytes")),
+                  std::stoull(row.at("input_peak_bytes")) / 2);
         for (const char* peer : {"cgal", "tetgen"}) {
             const std::string status = row.at(std::string(peer) + "_status");
             // A peer missing from this machine or build is skipped, never an error.

@@ -1,13 +1,13 @@
 // The suites of the chapter's second half (§5.6-5.8): gift-wrapping against Bowyer-Watson, vertex
 // deletion against rebuilding, and CDTs of generated PLCs against Propositions 5.5-5.6. Each kind
 // parses, runs at tiny sizes and fills its columns with values that could have come out wrong.
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "cavity/core/error.h"
 #include "cavity/core/plc.h"
@@ -46,7 +46,9 @@ std::vector<Row> read_rows(const fs::path& csv) {
     return rows;
 }
 
-double value(const Row& row, const std::string& column) { return std::stod(row.at(column)); }
+double value(const Row& row, const std::string& column) {
+    return std::stod(row.at(column));
+}
 
 /// Runs a suite given as text in a scratch directory; returns its main and per-j rows.
 struct TinyRun {
@@ -121,9 +123,10 @@ TEST(Retriangulation, DistributionNamesDependOnTheKind) {
 }
 
 TEST(Retriangulation, GiftWrapGivesBowyerWatsonsTetrahedraWithNhApexTests) {
-    const TinyRun run = run_suite("gw", "question q\nkind giftwrap\ndist cube sphere grid\n"
-                                        "n.quick 60 150\nn.full 60\nseeds.quick 3\nseeds.full 3\n"
-                                        "order brio\n");
+    const TinyRun run = run_suite("gw",
+                                  "question q\nkind giftwrap\ndist cube sphere grid\n"
+                                  "n.quick 60 150\nn.full 60\nseeds.quick 3\nseeds.full 3\n"
+                                  "order brio\n");
     ASSERT_EQ(run.rows.size(), 6u);
     for (const Row& row : run.rows) {
         SCOPED_TRACE(row.at("dist") + " " + row.at("n"));
@@ -142,9 +145,10 @@ TEST(Retriangulation, GiftWrapGivesBowyerWatsonsTetrahedraWithNhApexTests) {
 }
 
 TEST(Retriangulation, DeletionEqualsRebuildAndRecordsEachDeletion) {
-    const TinyRun run = run_suite("del", "question q\nkind deletion\ndist cube grid\n"
-                                         "n.quick 200\nn.full 200\nseeds.quick 5\nseeds.full 5\n"
-                                         "deletions.quick 25\n");
+    const TinyRun run = run_suite("del",
+                                  "question q\nkind deletion\ndist cube grid\n"
+                                  "n.quick 200\nn.full 200\nseeds.quick 5\nseeds.full 5\n"
+                                  "deletions.quick 25\n");
     ASSERT_EQ(run.rows.size(), 2u);
     ASSERT_EQ(run.j_rows.size(), 50u);
     for (const Row& row : run.rows) {
@@ -171,10 +175,11 @@ TEST(Retriangulation, DeletionEqualsRebuildAndRecordsEachDeletion) {
 }
 
 TEST(Retriangulation, CdtPolygonsStayBelowPropositions55And56) {
-    const TinyRun run = run_suite("cdt", "question q\nkind cdt\n"
-                                         "dist hull-faces nested-boxes terrain voxel-grid\n"
-                                         "n.quick 60 120\nn.full 60\n"
-                                         "seeds.quick 2\nseeds.full 2\n");
+    const TinyRun run = run_suite("cdt",
+                                  "question q\nkind cdt\n"
+                                  "dist hull-faces nested-boxes terrain voxel-grid\n"
+                                  "n.quick 60 120\nn.full 60\n"
+                                  "seeds.quick 2\nseeds.full 2\n");
     ASSERT_EQ(run.rows.size(), 8u);
     std::map<std::string, std::size_t> records;
     for (const Row& row : run.j_rows) {
@@ -191,9 +196,9 @@ TEST(Retriangulation, CdtPolygonsStayBelowPropositions55And56) {
         const double n = value(row, "vertices");
         EXPECT_EQ(n, value(row, "points") + value(row, "protection_points"));
         EXPECT_LT(value(row, "flips"), n * n);
-        EXPECT_EQ(value(row, "flips"), value(row, "flips_23") + value(row, "flips_32") +
-                                           value(row, "flips_14") + value(row, "flips_41") +
-                                           value(row, "flips_22") + value(row, "flips_44"));
+        EXPECT_EQ(value(row, "flips"),
+                  value(row, "flips_23") + value(row, "flips_32") + value(row, "flips_14") +
+                      value(row, "flips_41") + value(row, "flips_22") + value(row, "flips_44"));
         // One record per polygon, or none at all while the insertion does not keep them.
         if (row.at("polygon_records") != "0") {
             EXPECT_EQ(row.at("polygon_records"), row.at("polygons"));

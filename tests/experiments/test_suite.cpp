@@ -62,13 +62,16 @@ std::string error_of(const std::string& text) {
 TEST(Suite, MalformedLinesAreNamedByFileAndLine) {
     const std::string head = "question q\nkind runs\n";
     const std::string rest = "n.quick 10\nn.full 10\nseeds.quick 1\nseeds.full 1\n";
-    EXPECT_NE(error_of(head + "dist cube\nsizes 10\n" + rest).find("bad.suite:4: unknown key 'sizes'"),
-              std::string::npos);
-    EXPECT_NE(error_of(head + "dist cube\n" + "n.quick 10 ten\nn.full 10\nseeds.quick 1\nseeds.full 1\n")
-                  .find("bad.suite:4: 'ten' is not a non-negative integer"),
-              std::string::npos);
-    EXPECT_NE(error_of(head + "dist cube nowhere\n" + rest).find("bad.suite:3: unknown distribution"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(head + "dist cube\nsizes 10\n" + rest).find("bad.suite:4: unknown key 'sizes'"),
+        std::string::npos);
+    EXPECT_NE(
+        error_of(head + "dist cube\n" + "n.quick 10 ten\nn.full 10\nseeds.quick 1\nseeds.full 1\n")
+            .find("bad.suite:4: 'ten' is not a non-negative integer"),
+        std::string::npos);
+    EXPECT_NE(
+        error_of(head + "dist cube nowhere\n" + rest).find("bad.suite:3: unknown distribution"),
+        std::string::npos);
     EXPECT_NE(error_of(head + "dist cube\norder sideways\n" + rest).find("bad.suite:4:"),
               std::string::npos);
     EXPECT_NE(error_of(head + "dist cube\ncount-conflicts maybe\n" + rest)
@@ -76,7 +79,8 @@ TEST(Suite, MalformedLinesAreNamedByFileAndLine) {
               std::string::npos);
     EXPECT_NE(error_of(head + "dist cube\nbrio-ratio 1\n" + rest).find("bad.suite:4: brio-ratio"),
               std::string::npos);
-    EXPECT_NE(error_of(head + "dist cube\nkind jtets\n" + rest).find("bad.suite:4: key 'kind' given twice"),
+    EXPECT_NE(error_of(head + "dist cube\nkind jtets\n" + rest)
+                  .find("bad.suite:4: key 'kind' given twice"),
               std::string::npos);
     EXPECT_NE(error_of("question q\nkind sometimes\n").find("bad.suite:2: unknown kind"),
               std::string::npos);

@@ -28,9 +28,7 @@ template <class Storage, class Observer = NullObserver>
 class BowyerWatson {
 public:
     BowyerWatson(const Geometry& geometry, Storage& storage, Observer& observer)
-        : geometry_(geometry)
-        , storage_(storage)
-        , observer_(observer) {
+        : geometry_(geometry), storage_(storage), observer_(observer) {
         if (geometry_.weighted()) {
             deleted_stamp_.assign(geometry_.size(), kNoStamp);
             created_stamp_.assign(geometry_.size(), kNoStamp);
@@ -74,10 +72,10 @@ public:
 
     /// InsertVertex3D(u, t0): t0 must conflict with u. Deletes every tetrahedron in conflict with
     /// u (a depth-first search from t0 through conflicting neighbours: DigCavity3D) and fills the
-    /// cavity with one new tetrahedron per cavity face. As in the book's pseudocode, a tetrahedron outside
-    /// the cavity is tested once for every cavity face it borders (remembering the verdicts was
-    /// measured to cost more than the tests it saves), so the conflict tests number
-    /// (deleted - 1) + (cavity faces).
+    /// cavity with one new tetrahedron per cavity face. As in the book's pseudocode, a tetrahedron
+    /// outside the cavity is tested once for every cavity face it borders (remembering the verdicts
+    /// was measured to cost more than the tests it saves), so the conflict tests number (deleted -
+    /// 1) + (cavity faces).
     void insert_vertex(VertexId u, TetId t0, std::uint64_t step) {
         created_.clear();
         deleted_.clear();
@@ -228,8 +226,10 @@ private:
                     continue;
                 }
                 const HalfFacet h = half_facet(t, static_cast<int>(s));
-                const HalfFacet partner = gluer_.match_local(
-                    local[static_cast<std::size_t>(edges[s][0])], local[static_cast<std::size_t>(edges[s][1])], h);
+                const HalfFacet partner =
+                    gluer_.match_local(local[static_cast<std::size_t>(edges[s][0])],
+                                       local[static_cast<std::size_t>(edges[s][1])],
+                                       h);
                 if (partner != kNoHalfFacet) {
                     storage_.glue(h, partner);
                 }
@@ -241,8 +241,9 @@ private:
                 continue;
             }
             const HalfFacet h = half_facet(t, static_cast<int>(s));
-            const HalfFacet partner = gluer_.match_hashed(
-                v[static_cast<std::size_t>(edges[s][0])], v[static_cast<std::size_t>(edges[s][1])], h);
+            const HalfFacet partner = gluer_.match_hashed(v[static_cast<std::size_t>(edges[s][0])],
+                                                          v[static_cast<std::size_t>(edges[s][1])],
+                                                          h);
             if (partner != kNoHalfFacet) {
                 storage_.glue(h, partner);
             }
@@ -263,7 +264,8 @@ private:
         const auto s = static_cast<std::uint32_t>(step_);
         for (TetId t : deleted_) {
             for (VertexId w : storage_.vertices(t)) {
-                if (w != kGhostVertex && w != u && deleted_stamp_[w] == s && created_stamp_[w] != s) {
+                if (w != kGhostVertex && w != u && deleted_stamp_[w] == s &&
+                    created_stamp_[w] != s) {
                     vanished_.push_back(w);
                     created_stamp_[w] = s;  // report once
                 }

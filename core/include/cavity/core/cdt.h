@@ -50,7 +50,7 @@ struct Cdt {
               ///< its edges split where those points lie on them
     /// 0-based, each with positive right-hand volume (handedness.h)
     std::vector<std::array<std::uint32_t, 4>> tets;
-    std::vector<CdtFace> faces;                      ///< the polygons' triangles, with markers
+    std::vector<CdtFace> faces;  ///< the polygons' triangles, with markers
     Protection protection;
     PolygonInsertionCounters counters;
     std::vector<std::uint32_t> inserted;  ///< indices of the vertices inserted after the polygons

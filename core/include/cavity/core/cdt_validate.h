@@ -14,6 +14,7 @@ struct CdtValidation {
     std::vector<std::string> problems;  ///< the first few, each naming tetrahedra, edges or facets
     std::size_t problem_count = 0;
     std::size_t polygon_triangles = 0;
+
     bool ok() const { return problem_count == 0; }
 };
 

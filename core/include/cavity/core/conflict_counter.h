@@ -34,8 +34,8 @@ struct ConflictStep {
 /// defers the counting: it collects created tetrahedra in batches and counts each batch in the
 /// order of a space-filling curve through their centroids, so consecutive queries walk the same
 /// part of the tree and of memory (10^6 uniform points in a uniform order: 88 s in all, against
-/// 115 s counting each tetrahedron at its creation). Deletions of tetrahedra whose batch is still pending are
-/// recorded with them; the per-insertion tallies are assembled in on_finish().
+/// 115 s counting each tetrahedron at its creation). Deletions of tetrahedra whose batch is still
+/// pending are recorded with them; the per-insertion tallies are assembled in on_finish().
 ///
 /// Cost: a few exact tests per tetrahedron (points strictly inside a certified inner ball, and
 /// whole boxes inside it, are counted without one) plus the boxes along the sphere; memory 36

@@ -66,8 +66,8 @@ public:
         std::sort(start_of_old_.begin(), start_of_old_.end());
         const TetId fallback = engine.created().front();
         for (TetId old_cell : engine.deleted()) {
-            const auto hit = std::lower_bound(start_of_old_.begin(), start_of_old_.end(),
-                                              std::pair<TetId, TetId>{old_cell, 0});
+            const auto hit = std::lower_bound(
+                start_of_old_.begin(), start_of_old_.end(), std::pair<TetId, TetId>{old_cell, 0});
             const TetId start =
                 hit != start_of_old_.end() && hit->first == old_cell ? hit->second : fallback;
             VertexId p = head_[old_cell];
@@ -103,22 +103,29 @@ private:
         // Candidates: the centroid, then points pulled towards each vertex. Each is computed in
         // floating point and then certified strictly inside by exact orientations; a quarter and an
         // eighth are exact scalings, so no candidate overflows.
-        const auto combo = [](const Point3& p, const Point3& q, const Point3& r, const Point3& s,
-                              double wp, double wq) {
+        const auto combo = [](const Point3& p,
+                              const Point3& q,
+                              const Point3& r,
+                              const Point3& s,
+                              double wp,
+                              double wq) {
             const double wr = (1.0 - wp - wq) / 2.0;
-            return Point3{wp * p.x + wq * q.x + wr * r.x + wr * s.x, wp * p.y + wq * q.y + wr * r.y + wr * s.y,
+            return Point3{wp * p.x + wq * q.x + wr * r.x + wr * s.x,
+                          wp * p.y + wq * q.y + wr * r.y + wr * s.y,
                           wp * p.z + wq * q.z + wr * r.z + wr * s.z};
         };
-        const std::array<Point3, 5> candidates{
-            combo(a0, a1, a2, a3, 0.25, 0.25), combo(a0, a1, a2, a3, 0.625, 0.125),
-            combo(a1, a0, a2, a3, 0.625, 0.125), combo(a2, a0, a1, a3, 0.625, 0.125),
-            combo(a3, a0, a1, a2, 0.625, 0.125)};
+        const std::array<Point3, 5> candidates{combo(a0, a1, a2, a3, 0.25, 0.25),
+                                               combo(a0, a1, a2, a3, 0.625, 0.125),
+                                               combo(a1, a0, a2, a3, 0.625, 0.125),
+                                               combo(a2, a0, a1, a3, 0.625, 0.125),
+                                               combo(a3, a0, a1, a2, 0.625, 0.125)};
         for (const Point3& o : candidates) {
             bool inside = true;
             for (int f = 0; f < 4 && inside; ++f) {
                 const auto tri = facet_vertices(b, f);
-                inside = Geometry::orient3d(g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), o,
-                                            nullptr) == Sign::kPos;
+                inside = Geometry::orient3d(
+                             g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), o, nullptr) ==
+                         Sign::kPos;
             }
             if (inside) {
                 interior_ = o;
@@ -132,7 +139,10 @@ private:
 
     /// The remembering stochastic walk over cells (solid tetrahedra and ghost regions).
     template <class Storage, class Observer>
-    TetId walk_cells(BowyerWatson<Storage, Observer>& engine, VertexId p, TetId t, Counters* counters) {
+    TetId walk_cells(BowyerWatson<Storage, Observer>& engine,
+                     VertexId p,
+                     TetId t,
+                     Counters* counters) {
         const Geometry& g = engine.geometry();
         Storage& storage = engine.storage();
         const Point3& q = g.point(p);
@@ -155,8 +165,9 @@ private:
                 }
                 const auto tri = facet_vertices(v, f);
                 if (!ghost || f == 3) {
-                    if (Geometry::orient3d(g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), q,
-                                           counters) == Sign::kNeg) {
+                    if (Geometry::orient3d(
+                            g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), q, counters) ==
+                        Sign::kNeg) {
                         exit = f;
                     }
                     continue;
@@ -167,7 +178,8 @@ private:
                 const auto at = [&](VertexId w) -> const Point3& {
                     return w == kGhostVertex ? interior_ : g.point(w);
                 };
-                if (Geometry::orient3d(at(tri[0]), at(tri[1]), at(tri[2]), q, counters) == Sign::kPos) {
+                if (Geometry::orient3d(at(tri[0]), at(tri[1]), at(tri[2]), q, counters) ==
+                    Sign::kPos) {
                     exit = f;
                 }
             }

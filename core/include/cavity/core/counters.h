@@ -26,10 +26,11 @@ struct Counters {
     std::uint64_t walk_steps = 0;         ///< tetrahedra visited by walking point location
     std::uint64_t walk_orient_calls = 0;  ///< orient3d calls made by the walk
     std::uint64_t walk_fallbacks = 0;     ///< straight-line walks finished by the visibility walk
-    std::uint64_t points_redistributed = 0;  ///< conflict graph: uninserted points moved to a new cell
+    std::uint64_t points_redistributed =
+        0;  ///< conflict graph: uninserted points moved to a new cell
     std::uint64_t redistribution_steps = 0;  ///< conflict graph: cells visited while moving them
-    std::uint64_t duplicates = 0;  ///< input points repeating an earlier one, not inserted
-    std::uint64_t redundant = 0;   ///< weighted points that are not vertices (submerged)
+    std::uint64_t duplicates = 0;     ///< input points repeating an earlier one, not inserted
+    std::uint64_t redundant = 0;      ///< weighted points that are not vertices (submerged)
     std::uint64_t perturbations = 0;  ///< perturbed predicates that needed the tie-break
     std::uint64_t perturbation_cofactors = 0;
     std::uint64_t hash_probes = 0;
@@ -47,7 +48,8 @@ struct Counters {
     std::uint64_t conflict_tests =
         0;  ///< exact tests the counting made (its cost, not the engine's)
     /// [predicate kind][stage]: calls decided at that stage.
-    std::array<std::array<std::uint64_t, predicates::kStageCount>, kPredicateKindCount> stage_calls{};
+    std::array<std::array<std::uint64_t, predicates::kStageCount>, kPredicateKindCount>
+        stage_calls{};
 
     void count_predicate(PredicateKind kind, predicates::Stage stage) {
         ++stage_calls[static_cast<std::size_t>(kind)][static_cast<std::size_t>(stage)];

@@ -42,7 +42,8 @@ public:
 /// Builds "FILE:LINE: what", the form every parse error takes. Lines count from 1, so a line of 0
 /// (data not read from a file, e.g. a PLC built in code) is left out like a missing one, and so is
 /// an empty file name: "FILE: what" or "what".
-std::string located_message(const std::string& file, std::optional<std::size_t> line,
+std::string located_message(const std::string& file,
+                            std::optional<std::size_t> line,
                             const std::string& what);
 
 }  // namespace cavity::core

@@ -89,7 +89,8 @@ private:
     std::uint32_t locals_ = 0;
     std::vector<Local> local_table_ = std::vector<Local>(kLocalSlots, Local{kNoVertex, 0});
     PodStack<std::uint32_t> local_touched_;
-    std::vector<HalfFacet> matrix_ = std::vector<HalfFacet>(kMatrixSide * kMatrixSide, kNoHalfFacet);
+    std::vector<HalfFacet> matrix_ =
+        std::vector<HalfFacet>(kMatrixSide * kMatrixSide, kNoHalfFacet);
     PodStack<std::uint32_t> matrix_touched_;
     std::vector<Entry> table_ = std::vector<Entry>(64, Entry{kEmpty, kNoHalfFacet});
     PodStack<std::size_t> table_touched_;

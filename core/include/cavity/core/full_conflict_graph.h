@@ -156,8 +156,8 @@ private:
     std::vector<std::uint8_t> ghost_;
     std::vector<std::uint32_t> dead_index_;  ///< slot -> dead_lists_ entry, last insertion only
     std::vector<std::vector<VertexId>> dead_lists_;
-    std::vector<TetId> home_;          ///< by point: the last tetrahedron that took it
-    std::vector<std::uint32_t> seen_;  ///< by point: the stamp of the last filtering
+    std::vector<TetId> home_;                  ///< by point: the last tetrahedron that took it
+    std::vector<std::uint32_t> seen_;          ///< by point: the stamp of the last filtering
     std::vector<std::uint32_t> conflicts_of_;  ///< by point: live tetrahedra it conflicts with
     std::uint32_t stamp_ = 0;
     ConflictTally tally_;

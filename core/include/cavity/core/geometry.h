@@ -23,7 +23,9 @@ using predicates::WeightedPoint3;
 /// records its deciding stage.
 class Geometry {
 public:
-    Geometry(std::vector<Point3> points, std::vector<std::uint32_t> keys, std::vector<double> weights);
+    Geometry(std::vector<Point3> points,
+             std::vector<std::uint32_t> keys,
+             std::vector<double> weights);
 
     const Point3& point(VertexId v) const { return points_[v]; }
 
@@ -50,8 +52,8 @@ public:
         return orient3d(point(a), point(b), point(c), point(d), counters);
     }
 
-    static Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
-                         Counters* counters) {
+    static Sign orient3d(
+        const Point3& a, const Point3& b, const Point3& c, const Point3& d, Counters* counters) {
         if (counters == nullptr) {
             return predicates::orient3d(a, b, c, d);
         }
@@ -63,7 +65,9 @@ public:
     /// True when u is in the perturbed open circumball (weighted: below the perturbed witness
     /// plane) of the solid tetrahedron t. The common case (unweighted, uncounted, not a tie) is
     /// inline; the perturbation keys are read only on an exact tie.
-    [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t, VertexId u, Counters* counters) const {
+    [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t,
+                                                VertexId u,
+                                                Counters* counters) const {
         if (counters == nullptr && !weighted()) {
             const Sign exact =
                 predicates::insphere(point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));

@@ -27,15 +27,16 @@ struct GiftWrapResult {
     RetriangulationCounters counters;
 };
 
-/// The (weighted) Delaunay triangulation of `points` under cavity's perturbation (keyed on the input
-/// index), by gift-wrapping from one Delaunay seed tetrahedron. The seed is found without distances:
-/// from any tetrahedron, while some point is in its perturbed circumball, step to the tetrahedron of
-/// the 5-point flip that contains a fixed interior point; its lifted height there strictly drops,
-/// so the walk ends at the Delaunay tetrahedron containing that point. Each of its facets is a
-/// strongly Delaunay triangle (the perturbed points are generic), the seed §5.6 asks for; the book's
-/// recipe for one (nearest neighbour, then the smallest circumcircle) compares distances, whose
-/// ties on degenerate input the perturbation does not decide, so the walk replaces it. O(n) tests
-/// per facet: O(n h) in all. \throws Error for fewer than 4 distinct or affinely dependent points.
+/// The (weighted) Delaunay triangulation of `points` under cavity's perturbation (keyed on the
+/// input index), by gift-wrapping from one Delaunay seed tetrahedron. The seed is found without
+/// distances: from any tetrahedron, while some point is in its perturbed circumball, step to the
+/// tetrahedron of the 5-point flip that contains a fixed interior point; its lifted height there
+/// strictly drops, so the walk ends at the Delaunay tetrahedron containing that point. Each of its
+/// facets is a strongly Delaunay triangle (the perturbed points are generic), the seed §5.6 asks
+/// for; the book's recipe for one (nearest neighbour, then the smallest circumcircle) compares
+/// distances, whose ties on degenerate input the perturbation does not decide, so the walk replaces
+/// it. O(n) tests per facet: O(n h) in all. \throws Error for fewer than 4 distinct or affinely
+/// dependent points.
 GiftWrapResult gift_wrap_delaunay(const PointSet& points);
 
 /// Retriangulates a cavity by gift-wrapping: `boundary` lists the tetrahedra just outside the

@@ -27,6 +27,7 @@ struct PointSet {
     std::vector<std::int64_t> markers;
 
     bool weighted() const { return !weights.empty(); }
+
     std::size_t size() const { return points.size(); }
 };
 

@@ -26,9 +26,9 @@ namespace cavity::core {
 /// The work of one FlipInsertPolygon call: Proposition 5.5 bounds its flips by m^2 and its events
 /// by O(m^2) (so O(m^2 log m) time), m being the number of vertices of the region R.
 struct PolygonWork {
-    std::uint32_t facet = 0;              ///< 0-based index in Plc::facets
-    std::uint64_t region_vertices = 0;    ///< m
-    std::uint64_t region_tets = 0;        ///< |R| when the polygon is inserted
+    std::uint32_t facet = 0;            ///< 0-based index in Plc::facets
+    std::uint64_t region_vertices = 0;  ///< m
+    std::uint64_t region_tets = 0;      ///< |R| when the polygon is inserted
     /// Tetrahedra stepped through by step 1: for each loop side, the walk through the star of one
     /// end toward the other to a tetrahedron holding the side, then the ring of tetrahedra around
     /// the side.
@@ -36,7 +36,7 @@ struct PolygonWork {
     /// Tetrahedra first tested by step 2's depth-first search (the neighbours of the tetrahedra
     /// that touch the polygon); with the rings of step 1, every tetrahedron steps 1-2 look at.
     std::uint64_t search_visited = 0;
-    std::uint64_t flips = 0;              ///< flips performed
+    std::uint64_t flips = 0;  ///< flips performed
     std::uint64_t events_queued = 0;
 };
 
@@ -49,8 +49,8 @@ struct PolygonInsertionCounters {
     std::uint64_t search_visited = 0;   ///< PolygonWork::search_visited summed over polygons
     std::uint64_t certify_calls = 0;
     std::uint64_t events_queued = 0;
-    std::uint64_t events_stale = 0;     ///< dequeued after their facet had gone
-    std::uint64_t events_held = 0;      ///< held back as inadmissible (each time)
+    std::uint64_t events_stale = 0;  ///< dequeued after their facet had gone
+    std::uint64_t events_held = 0;   ///< held back as inadmissible (each time)
     std::uint64_t max_region_vertices = 0;
     RetriangulationCounters flips;
     std::vector<PolygonWork> per_polygon;  ///< one record per inserted polygon, in order

@@ -16,12 +16,13 @@ inline constexpr int kFlipKindCount = 6;
 /// chapter bounds gift-wrapping by O(nh) apex tests and polygon insertion by m^2 flips.
 struct RetriangulationCounters {
     std::array<std::uint64_t, kFlipKindCount> flips{};  ///< performed, by FlipKind
-    std::uint64_t flips_refused = 0;    ///< requested flips whose new tetrahedra were not valid
-    std::uint64_t facets_wrapped = 0;   ///< unfinished facets taken from the dictionary
-    std::uint64_t hull_facets = 0;      ///< wrapped facets with no apex in front (gift-wrap (a))
+    std::uint64_t flips_refused = 0;      ///< requested flips whose new tetrahedra were not valid
+    std::uint64_t facets_wrapped = 0;     ///< unfinished facets taken from the dictionary
+    std::uint64_t hull_facets = 0;        ///< wrapped facets with no apex in front (gift-wrap (a))
     std::uint64_t apex_orient_tests = 0;  ///< orient3d calls deciding which points are in front
-    std::uint64_t insphere_calls = 0;   ///< perturbed conflict tests (insphere/orient4d/outer halfspace)
-    std::uint64_t seed_steps = 0;       ///< tetrahedra visited while finding the seed tetrahedron
+    std::uint64_t insphere_calls =
+        0;                         ///< perturbed conflict tests (insphere/orient4d/outer halfspace)
+    std::uint64_t seed_steps = 0;  ///< tetrahedra visited while finding the seed tetrahedron
     std::uint64_t tets_created = 0;
     std::uint64_t tets_deleted = 0;
     std::uint64_t vertices_deleted = 0;

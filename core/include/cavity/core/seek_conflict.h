@@ -9,7 +9,7 @@ namespace cavity::core {
 
 /// What point location found for a new vertex u.
 struct ConflictSeed {
-    TetId tet = kNoTet;             ///< a tetrahedron in conflict with u: where the cavity starts
+    TetId tet = kNoTet;              ///< a tetrahedron in conflict with u: where the cavity starts
     VertexId duplicate = kNoVertex;  ///< u repeats this vertex (same coordinates, same weight)
 };
 

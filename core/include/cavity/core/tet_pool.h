@@ -105,7 +105,8 @@ protected:
         alive_[t >> 6] |= std::uint64_t{1} << (t & 63u);
         ++live_;
         for (VertexId u : v) {
-            if (u < vertex_tet_.size()) [[likely]] {  // reserve() sized it; the ghost is never below
+            if (u < vertex_tet_.size())
+                [[likely]] {  // reserve() sized it; the ghost is never below
                 vertex_tet_[u] = t;
             } else if (u != kGhostVertex) {
                 vertex_tet_.resize(std::max<std::size_t>(u + 1, 2 * vertex_tet_.size()), kNoTet);

@@ -60,18 +60,27 @@ inline constexpr auto kApexFaceEdge = [] {
     return table;
 }();
 
-constexpr HalfFacet half_facet(TetId t, int f) { return 4 * t + static_cast<HalfFacet>(f); }
+constexpr HalfFacet half_facet(TetId t, int f) {
+    return 4 * t + static_cast<HalfFacet>(f);
+}
 
-constexpr TetId tet_of(HalfFacet h) { return h >> 2; }
+constexpr TetId tet_of(HalfFacet h) {
+    return h >> 2;
+}
 
-constexpr int facet_of(HalfFacet h) { return static_cast<int>(h & 3u); }
+constexpr int facet_of(HalfFacet h) {
+    return static_cast<int>(h & 3u);
+}
 
-constexpr bool is_ghost(const TetVertices& v) { return v[3] == kGhostVertex; }
+constexpr bool is_ghost(const TetVertices& v) {
+    return v[3] == kGhostVertex;
+}
 
 /// The facet f of a tetrahedron as three vertex ids, oriented with v_f on its positive side.
 constexpr std::array<VertexId, 3> facet_vertices(const TetVertices& v, int f) {
     const auto& s = kFacetVertices[static_cast<std::size_t>(f)];
-    return {v[static_cast<std::size_t>(s[0])], v[static_cast<std::size_t>(s[1])],
+    return {v[static_cast<std::size_t>(s[0])],
+            v[static_cast<std::size_t>(s[1])],
             v[static_cast<std::size_t>(s[2])]};
 }
 

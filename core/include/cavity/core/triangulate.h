@@ -28,12 +28,12 @@ StorageKind parse_storage_kind(std::string_view name);  // "array", "hash"; thro
 struct TriangulateOptions {
     LocateKind locate = LocateKind::kWalk;
     StorageKind storage = StorageKind::kArray;
-    bool count = false;       ///< fill Triangulation::counters (instrumented engine)
+    bool count = false;  ///< fill Triangulation::counters (instrumented engine)
     /// Also count every created tetrahedron's conflicts (Σj, Theorem 5.4) exactly, by
     /// ConflictCountingObserver (conflict_counter.h); implies `count`. Costs about one exact test
     /// per conflict: Σj ≈ 81 n ln n in a uniform cube.
     bool count_conflicts = false;
-    std::uint64_t seed = 0;   ///< the walk's stochastic choices
+    std::uint64_t seed = 0;  ///< the walk's stochastic choices
     /// How the first tetrahedron is taken from the sequence (bootstrap.h): kFirst keeps the
     /// sequence as it is for points in general position, as exact identities need.
     BootstrapRule bootstrap = BootstrapRule::kWidest;

@@ -83,7 +83,8 @@ void run(const Prepared& prep,
         if constexpr (Observer::kCounting) {
             const bool inserted = seed.tet != kNoTet;
             observer.on_insertion(InsertionRecord{
-                geometry.key(u), u,
+                geometry.key(u),
+                u,
                 inserted ? static_cast<std::uint32_t>(engine.created().size()) : 0u,
                 inserted ? static_cast<std::uint32_t>(engine.deleted().size()) : 0u,
                 static_cast<std::uint32_t>(observer.counters()->walk_steps - steps_before)});

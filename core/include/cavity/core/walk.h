@@ -45,8 +45,11 @@ public:
                 if constexpr (Observer::kCounting) {
                     ++counters->walk_orient_calls;
                 }
-                if (Geometry::orient3d(geometry.point(tri[0]), geometry.point(tri[1]),
-                                       geometry.point(tri[2]), p, counters) == Sign::kNeg) {
+                if (Geometry::orient3d(geometry.point(tri[0]),
+                                       geometry.point(tri[1]),
+                                       geometry.point(tri[2]),
+                                       p,
+                                       counters) == Sign::kNeg) {
                     exit = f;
                     break;
                 }

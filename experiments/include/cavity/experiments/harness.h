@@ -32,14 +32,14 @@ struct HarnessOptions {
     /// With merge_only: merge the rows measured so far even when runs are missing (a long tier
     /// stopped part-way); the metadata says how many. A later `resume` continues from the table.
     bool partial = false;
-    std::string command_line;           ///< recorded in the metadata
+    std::string command_line;  ///< recorded in the metadata
     /// (work done, total work), in arbitrary cost units; may be empty.
     std::function<void(double, double)> progress;
 };
 
 struct HarnessResult {
-    std::size_t runs_total = 0;  ///< runs of the suite at this tier
-    std::size_t runs_done = 0;   ///< executed by this call
+    std::size_t runs_total = 0;    ///< runs of the suite at this tier
+    std::size_t runs_done = 0;     ///< executed by this call
     std::size_t runs_skipped = 0;  ///< found complete in the part file (resume)
     bool merged = false;
     std::filesystem::path csv;  ///< the merged table, or the part file when not merged yet

@@ -46,8 +46,9 @@ public:
         core::CountingObserver::on_tet_created(t, v, step);
         TetLife life{{0, 0, 0, 0}, core::is_ghost(v), step, kNeverDeleted};
         for (std::size_t i = 0; i < 4; ++i) {
-            life.vertices[i] = v[i] == core::kGhostVertex ? std::numeric_limits<std::uint32_t>::max()
-                                                          : geometry_->key(v[i]);
+            life.vertices[i] = v[i] == core::kGhostVertex
+                                   ? std::numeric_limits<std::uint32_t>::max()
+                                   : geometry_->key(v[i]);
         }
         std::sort(life.vertices.begin(), life.vertices.end());
         if (t >= record_of_slot_.size()) {

@@ -85,6 +85,7 @@ struct Suite {
     std::uint64_t validate_max = UINT64_MAX;  ///< `validate N`: larger runs are not checked
 
     bool validates(std::uint64_t n) const { return validate && n <= validate_max; }
+
     /// Distribution -> largest size run (the `cap` key); sizes above it are not enumerated.
     std::map<std::string, std::uint64_t> caps;
     TierSettings quick;

@@ -89,8 +89,8 @@ inline Sign orient4d_sos(const WeightedPoint3& a,
     if (exact != Sign::kZero) {
         return exact;
     }
-    return detail::sos_tie({a.x, a.y, a.z}, {b.x, b.y, b.z}, {c.x, c.y, c.z}, {d.x, d.y, d.z},
-                           {e.x, e.y, e.z}, keys);
+    return detail::sos_tie(
+        {a.x, a.y, a.z}, {b.x, b.y, b.z}, {c.x, c.y, c.z}, {d.x, d.y, d.z}, {e.x, e.y, e.z}, keys);
 }
 
 SosVerdict orient4d_sos_staged(const WeightedPoint3& a,
