@@ -75,7 +75,7 @@ grep -q "^# kept$" README.md && grep -q "^between$" README.md || fail "text outs
 grep -q "old text" README.md && fail "the old section was kept"
 # (5587.5 - 5487.5) / (333.3333 / sqrt(100)) = +3.00
 grep -q "| cube seed 1 | Σj | 5 587.5 ± 65.3 | 5 487.5 | +3.00 |" README.md || fail "Σj row: $(grep 'Σj |' README.md)"
-grep -q "differ from the exact expectations beyond their 95 % intervals in 1 of 2" README.md ||
+grep -q "fails: 1 of 2 means differ from the exact expectations beyond the family-wise 95 % level" README.md ||
   fail "a 3σ deviation is not reported as one"
 # (400 - 200) / ln 10 = 86.9 per unit of ln n
 grep -q "| cube | random | 200.0 \[200.0–200.0\] | 400.0 \[400.0–400.0\] | 86.9 |" README.md ||
