@@ -84,6 +84,8 @@ expect "contains Theorem 5.4's 81.21 in its interval for cube\." "theorem verdic
 expect "The limits of created and deleted per point contain the Poisson constants for cube\." \
   "theorem limits" "limits of created"
 expect "| cube (n = 1000…10000000) | 81.2 \\[" "theorem fit row" "| cube (n"
+expect "Precision at n = 10000000 .*Goal met for every quantity and point set\." "theorem precision" \
+  "Precision at"
 expect "took 2 min 0 s wall.*load average of 1.5–2.5.*jtets 61 s, creation 59 s" "cost" "Cost (generated)"
 expect "| moment | 20 | 40 | 10 | 3 510 ± 2 | 0.2 | 1.00 |" "extend row" "| moment | 20 | 40"
 expect "exceeds its values at smaller s for moment: the bound is not confirmed" "extend verdict" \
