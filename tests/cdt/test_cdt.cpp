@@ -16,6 +16,7 @@
 namespace cavity::core {
 namespace {
 
+using test::box_corners;
 using test::dyadic_grid_points;
 using test::make_plc;
 
@@ -74,17 +75,6 @@ TEST(ReadPoly, ErrorsNameFileAndLine) {
     for (const auto& p : {bad_corner, not_planar, truncated}) {
         std::filesystem::remove(p);
     }
-}
-
-std::vector<Point3> box_corners(double x, double y, double z0, double z1) {
-    return {{0, 0, z0},
-            {x, 0, z0},
-            {x, y, z0},
-            {0, y, z0},
-            {0, 0, z1},
-            {x, 0, z1},
-            {x, y, z1},
-            {0, y, z1}};
 }
 
 TEST(Cdt, CubeWithInteriorPointsAndMiddleSquare) {

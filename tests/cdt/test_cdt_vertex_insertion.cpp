@@ -23,20 +23,10 @@
 namespace cavity::core {
 namespace {
 
+using test::box_corners;
 using test::dyadic_grid_points;
 using test::Loops;
 using test::make_plc;
-
-std::vector<Point3> box_corners(double x, double y, double z0, double z1) {
-    return {{0, 0, z0},
-            {x, 0, z0},
-            {x, y, z0},
-            {0, y, z0},
-            {0, 0, z1},
-            {x, 0, z1},
-            {x, y, z1},
-            {0, y, z1}};
-}
 
 /// The six faces of a box made by box_corners starting at point `b`.
 std::vector<Loops> box_faces(std::uint32_t b) {

@@ -29,6 +29,19 @@ inline core::Plc make_plc(std::vector<core::Point3> points,
     return plc;
 }
 
+/// The eight corners of the box [0, x] × [0, y] × [z0, z1]: the bottom face counter-clockwise
+/// from the origin, then the top face in the same order.
+inline std::vector<core::Point3> box_corners(double x, double y, double z0, double z1) {
+    return {{0, 0, z0},
+            {x, 0, z0},
+            {x, y, z0},
+            {0, y, z0},
+            {0, 0, z1},
+            {x, 0, z1},
+            {x, y, z1},
+            {0, y, z1}};
+}
+
 /// n points of the binary grid of spacing 1/16 strictly inside (0, 4)^3: dyadic, so the PLC
 /// edges through them have exact split points and the grid's degeneracies exercise the
 /// perturbation.
