@@ -63,11 +63,11 @@ void append_shuffled(std::vector<std::uint32_t>& out,
 
 /// The work of inserting T into Del S, one order: Theorem 5.4's charge split at the phase change.
 struct Phase {
-    double created = 0;
-    double deleted = 0;
-    double conflicts = 0;  ///< created during T's insertions, solid and ghost
-    double initial_conflicts =
-        0;  ///< live after S: the conflict graph Exercise 2 builds by brute force
+    double created = 0;    ///< tetrahedra created during T's insertions, ghosts included
+    double deleted = 0;    ///< and deleted
+    double conflicts = 0;  ///< conflicts created during T's insertions, solid and ghost
+    /// Live conflicts after S: the conflict graph Exercise 2 builds by brute force.
+    double initial_conflicts = 0;
     double first_deleted = 0;  ///< the first point of T's cavity
     double max_cavity = 0;
 };
@@ -105,7 +105,7 @@ Phase extend_once(const core::PointSet& points, std::uint32_t s, std::uint64_t s
 }
 
 /// The same points from scratch in a uniform order of S ∪ T: tetrahedra created and conflicts
-/// created (solid and ghost), over the whole construction.
+/// created over the whole construction, ghosts included in both as in extend_once.
 std::pair<double, double> scratch_once(const core::PointSet& points, std::uint64_t seed) {
     core::Random random(seed);
     std::vector<std::uint32_t> sequence;
@@ -116,7 +116,7 @@ std::pair<double, double> scratch_once(const core::PointSet& points, std::uint64
     core::ConflictCountingObserver observer;
     const core::Counters c =
         core::triangulate_observed(points, sequence, options, observer).counters;
-    return {static_cast<double>(c.tets_created),
+    return {static_cast<double>(c.tets_created + c.ghosts_created),
             static_cast<double>(c.conflicts_created + c.ghost_conflicts_created)};
 }
 

@@ -90,8 +90,8 @@ def extend_section(inp):
            f"T: t = {', '.join(map(str, ts))} points uniform in S's bounding box; per (s, t) "
            f"{cell['orders']} uniform orders of T over {cell['seeds']} seed{'s' if cell['seeds'] > 1 else ''}, each after S (in a "
            "uniform order) with the book's conflict graph, and the same points from scratch in a "
-           "uniform order of S ∪ T. Work = tetrahedra created + conflicts created (solid and "
-           "ghost) while T is inserted: Theorem 5.4's charge, counted exactly by the kd-tree counter.",
+           "uniform order of S ∪ T. Work = tetrahedra created + conflicts created (ghost "
+           "tetrahedra and their conflicts included) while T is inserted: Theorem 5.4's charge, counted exactly by the kd-tree counter.",
            "",
            "| S | s | t | created | conflicts (95 %) | work / (t² + t s²) | T after S / all from scratch |",
            "|---|---|---|---|---|---|---|"]
