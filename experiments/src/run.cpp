@@ -1,5 +1,6 @@
 #include "cavity/experiments/run.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "cavity/experiments/measure.h"
@@ -75,12 +76,14 @@ double run_cost(const Suite& suite, const TierSettings& tier, const RunSpec& run
         case SuiteKind::kDeletion:
             return n * 3 + static_cast<double>(tier.deletions) * 100;
         case SuiteKind::kCdt:
-            return n * n * 0.01;  // region scans: O(h) per polygon
-        case SuiteKind::kExtend:  // Exercise 2's bound t^2 + t s^2 for the largest T, per order
-            return static_cast<double>(tier.orders) *
-                   (tier.added.empty() ? n
-                                       : static_cast<double>(tier.added.back()) *
-                                             (static_cast<double>(tier.added.back()) + n * n));
+            return n * n * 0.01;    // region scans: O(h) per polygon
+        case SuiteKind::kExtend: {  // Exercise 2's bound t^2 + t s^2 for the largest T, per order
+            const double t =
+                tier.added.empty()
+                    ? n
+                    : static_cast<double>(*std::max_element(tier.added.begin(), tier.added.end()));
+            return static_cast<double>(tier.orders) * t * (t + n * n);
+        }
         case SuiteKind::kRuns:
             break;
     }
