@@ -21,11 +21,18 @@ def cost_section(inp):
         found = re.search(r'"cpu":\s*"([^"]*)"', open(meta).read())
         cpu = f" ({found.group(1)})" if found else ""
     parts = ", ".join(f"{r['suite']} {r['wall_s']} s" for r in rows)
+    # Tables measured apart from that run (a suite added or rerun alone) have no wall time here.
+    timed = {r["suite"] for r in rows}
+    apart = sorted(name[:-len(".meta.json")] for name in os.listdir(inp)
+                   if name.endswith(".meta.json") and name[:-len(".meta.json")] not in timed)
     return (f"**Cost (generated).** The last run of `scripts/experiments-quick.sh` took "
             f"{total // 60} min {total % 60} s wall on this machine{cpu}, with a load average of "
             f"{min(loads):.1f}–{max(loads):.1f} at the ends of its suites (other jobs share the "
-            f"machine, so wall times are upper bounds): {parts}. The full tier (`--tier full`) is "
-            "not run here. The paper tier's cost is in the theorem section.")
+            f"machine, so wall times are upper bounds): {parts}."
+            + (f" Measured apart from that run, so not in this sum: {', '.join(apart)}."
+               if apart else "")
+            + " The full tier (`--tier full`) is not run here. The paper tier's cost is in the "
+            "theorem section.")
 
 
 
