@@ -56,8 +56,8 @@ void append_shuffled(std::vector<std::uint32_t>& out,
     for (std::uint32_t i = first; i < last; ++i) {
         out.push_back(i);
     }
-    for (std::size_t i = out.size() - 1; i > start; --i) {
-        std::swap(out[i], out[start + random.below(i - start + 1)]);
+    for (std::size_t i = out.size(); i > start + 1; --i) {  // an empty range draws nothing
+        std::swap(out[i - 1], out[start + random.below(i - start)]);
     }
 }
 
