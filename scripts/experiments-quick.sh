@@ -17,7 +17,7 @@ out=results/experiments/quick
 paper=results/experiments/paper  # the paper tier's tables, when committed (see results/README.md)
 start=$(date +%s)
 cost="suite,wall_s,load_average"
-for suite in jtets creation brio scaling theorem locality quadratic walk adversarial extend degenerate peers giftwrap deletion cdt cdtvalid; do
+for suite in jtets creation brio scaling theorem theorem-prefix locality quadratic walk adversarial extend degenerate peers giftwrap deletion cdt cdtvalid; do
   t0=$(date +%s)
   "$build/cli/cavity" experiment "$suite" --tier quick --out "$out" --quiet
   cost+=$'\n'"$suite,$(( $(date +%s) - t0 )),$(cut -d' ' -f1 /proc/loadavg)"

@@ -162,6 +162,7 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
     options.storage = core::parse_storage_kind(run.storage);
     options.count = true;
     options.count_conflicts = suite.count_conflicts;
+    options.prefix = suite.prefix;
     options.seed = run.seed;
     options.bootstrap =
         suite.bootstrap_first ? core::BootstrapRule::kFirst : core::BootstrapRule::kWidest;
@@ -193,7 +194,7 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
         peak = peak_known ? peak_rss_bytes() : 0;
     }
     std::string valid = "-";
-    if (suite.validates(run.n)) {
+    if (suite.validates(run.n) && suite.prefix == 0) {
         const core::ValidationReport report = core::validate(points, result.tets);
         if (!report.ok()) {
             throw core::Error(run.dist + " n=" + std::to_string(run.n) + " order " + run.order +
@@ -203,8 +204,11 @@ RunOutput triangulation(const Suite& suite, const RunSpec& run) {
     }
     const core::Counters& c = result.counters;
     const auto count = static_cast<double>(points.size());
-    const std::uint64_t vertices =
-        points.size() - result.duplicates.size() - result.redundant.size();
+    // A prefix run's vertices are its first points; per-point columns stay per input point, so
+    // its conflicts_per_point is the prefix's share of a whole run's Σj/n.
+    const std::uint64_t inserted =
+        suite.prefix == 0 ? points.size() : std::min<std::uint64_t>(suite.prefix, points.size());
+    const std::uint64_t vertices = inserted - result.duplicates.size() - result.redundant.size();
     RunOutput out;
     out.values = {number(std::uint64_t{points.size()}),
                   number(vertices),

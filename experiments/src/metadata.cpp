@@ -103,6 +103,9 @@ std::string metadata_json(const Suite& suite,
     std::snprintf(ratio, sizeof ratio, "%.17g", suite.brio_ratio);
     field("brio_ratio", ratio, false);
     field("count_conflicts", suite.count_conflicts ? "true" : "false", false);
+    if (suite.prefix != 0) {
+        field("prefix", std::to_string(suite.prefix), false);
+    }
     // The creation, hj and extend kinds always start from the order's own first four points.
     const bool own_first = suite.kind == SuiteKind::kCreation || suite.kind == SuiteKind::kHj ||
                            suite.kind == SuiteKind::kExtend;

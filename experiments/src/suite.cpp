@@ -290,6 +290,11 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
             added_of->added = reader.integers(words);
         } else if (TierSettings* deletions_of = tier_of_key(suite, key, "deletions.")) {
             deletions_of->deletions = reader.integer(single());
+        } else if (key == "prefix") {
+            suite.prefix = reader.integer(single());
+            if (suite.prefix < 4) {
+                reader.fail("prefix must be at least 4 (the bootstrap tetrahedron)");
+            }
         } else if (key == "bootstrap") {
             const std::string& w = single();
             if (w != "widest" && w != "first") {
@@ -341,6 +346,11 @@ Suite parse_suite(std::string_view text, const std::string& file, const std::str
          (!suite.paper.sizes.empty() && suite.paper.added.empty()))) {
         throw Error(
             located_message(file, std::nullopt, "an extend suite needs added.TIER for every tier"));
+    }
+    if (suite.prefix != 0 && (suite.kind != SuiteKind::kRuns || !suite.count_conflicts)) {
+        // A prefix measures the early conflicts of a run; without them it measures nothing.
+        throw Error(
+            located_message(file, std::nullopt, "prefix needs kind runs and count-conflicts yes"));
     }
     if (!validate_given) {
         suite.validate = suite.kind == SuiteKind::kDegenerate || suite.kind == SuiteKind::kCdt;

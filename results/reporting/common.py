@@ -9,19 +9,14 @@ from collections import defaultdict
 
 
 CREATED_PER_POINT = 96 * math.pi**2 / 35       # 27.07, uniform order (backward analysis)
-CREATED_PER_POINT = 96 * math.pi**2 / 35       # 27.07, uniform order (backward analysis)
-DELETED_PER_POINT = 72 * math.pi**2 / 35       # 20.30
 DELETED_PER_POINT = 72 * math.pi**2 / 35       # 20.30
 TETS_PER_POINT = 24 * math.pi**2 / 35          # 6.768 (Miles)
-TETS_PER_POINT = 24 * math.pi**2 / 35          # 6.768 (Miles)
-CONFLICT_SLOPE = 3 * CREATED_PER_POINT         # 81.21 conflicts per point per unit of ln n
 CONFLICT_SLOPE = 3 * CREATED_PER_POINT         # 81.21 conflicts per point per unit of ln n
 Z95 = 1.959964
 
 F_CONST = 4 * math.pi**2 / 35                  # F_j/n -> F_CONST (j+1)(j+2)(j+3), Poisson
 
 BOOTSTRAP_RESAMPLES = 2000
-
 
 
 def read(path):
@@ -31,15 +26,12 @@ def read(path):
         return list(csv.DictReader(f))
 
 
-
 def mean(values):
     return sum(values) / len(values)
 
 
-
 def fmt(x, digits=1):
     return f"{x:,.{digits}f}".replace(",", " ")
-
 
 
 def loglog_slope(xs, ys):
@@ -51,7 +43,6 @@ def loglog_slope(xs, ys):
     return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / den if den > 0 else float("nan")
 
 
-
 def group_rows(rows, *keys):
     groups = defaultdict(list)
     for r in rows:
@@ -59,16 +50,13 @@ def group_rows(rows, *keys):
     return groups
 
 
-
 def median(values):
     v = sorted(values)
     return (v[(len(v) - 1) // 2] + v[len(v) // 2]) / 2
 
 
-
 def spread(values, digits=2):
     return f"{median(values):.{digits}f} [{min(values):.{digits}f}–{max(values):.{digits}f}]"
-
 
 
 def span(values, digits=2):
@@ -76,10 +64,8 @@ def span(values, digits=2):
     return f"{lo:.{digits}f}" if f"{lo:.{digits}f}" == f"{hi:.{digits}f}" else f"{lo:.{digits}f}–{hi:.{digits}f}"
 
 
-
 def interval(value, lo, hi, digits=1):
     return f"{fmt(value, digits)} [{fmt(lo, digits)}, {fmt(hi, digits)}]"
-
 
 
 def seed_bootstrap(groups, statistic, resamples=BOOTSTRAP_RESAMPLES, seed=54):
@@ -95,7 +81,6 @@ def seed_bootstrap(groups, statistic, resamples=BOOTSTRAP_RESAMPLES, seed=54):
     lo = values[int(0.025 * (resamples - 1))]
     hi = values[int(math.ceil(0.975 * (resamples - 1)))]
     return statistic(groups), lo, hi
-
 
 
 def least_squares(columns, ys):

@@ -8,7 +8,6 @@ from .common import fmt, group_rows, median, read, spread
 PEER_GOALS = {"cube": 0.5, "grid": 0.8, "sphere": 0.8}  # cavity/CGAL CPU time, issue 4
 
 
-
 def cost_section(inp):
     rows = read(os.path.join(inp, "cost.csv"))
     if rows is None:
@@ -35,7 +34,6 @@ def cost_section(inp):
             "theorem section.")
 
 
-
 def degenerate_section(inp):
     rows = read(os.path.join(inp, "degenerate.csv"))
     if rows is None:
@@ -59,7 +57,6 @@ def degenerate_section(inp):
                "for every order, locator and storage." if ok else
                "Some outputs are invalid or differ between variants: see `degenerate.csv`."))
     return "\n".join(out)
-
 
 
 def peers_section(inp):

@@ -47,7 +47,6 @@ def adversarial_section(inp):
     return "\n".join(out)
 
 
-
 def extend_table(inp):
     """Exercise 2 (suite `extend`): {dist: {(s, t): averages over seeds}} of the work of inserting
     T into Del S (created + conflicts created while T is inserted), the same points from scratch,
@@ -74,7 +73,6 @@ def extend_table(inp):
                                "first": avg("first_deleted_mean"), "bound": t * t + t * s * s,
                                "orders": orders, "seeds": len(rs)}
     return table
-
 
 
 def extend_section(inp):

@@ -62,13 +62,11 @@ def jtets_section(inp):
     return "\n".join(out)
 
 
-
 def creation_dir(inp, paper):
     """The creation suite's tables: the paper tier's (10^5 orders) when they are there."""
     if paper and os.path.exists(os.path.join(paper, "creation.csv")):
         return paper
     return inp
-
 
 
 def creation_section(inp):
@@ -166,7 +164,6 @@ def creation_section(inp):
     return "\n".join(out)
 
 
-
 def brio_estimates(inp, min_expected=20):
     """Proposition 5.3 at large n from the `brio` suite (kind hj): for each BRIO order and j, q̂_j =
     (mean h_j under the BRIO) / (mean h_j under the uniform order) × 1/C(j+4,4), with the
@@ -205,7 +202,6 @@ def brio_estimates(inp, min_expected=20):
         result[key] = {"ratio": float(run["brio_ratio"]), "orders": R, "run": run,
                        "uniform": orders[base], "rows": rows}
     return result
-
 
 
 def brio_section(inp):
@@ -250,7 +246,6 @@ def brio_section(inp):
                + f" as the ratio falls ({', '.join(f'{100 * x:+.1f} %' for x in extra)}). One point "
                "set and one n: no claim about larger n yet.")
     return "\n".join(out)
-
 
 
 def brio_ratio_text(inp, suite="creation"):

@@ -41,7 +41,6 @@ def giftwrap_section(inp):
     return "\n".join(out)
 
 
-
 def deletion_section(inp):
     rows = read(os.path.join(inp, "deletion.csv"))
     jrows = read(os.path.join(inp, "deletion.j.csv"))
@@ -86,7 +85,6 @@ def deletion_section(inp):
                   if flat else f"its work per deletion grows {max(growth):.2f}× with n, against the "
                   "prediction."))
     return "\n".join(out)
-
 
 
 def cdt_section(inp):

@@ -19,7 +19,6 @@ def timed_engine(inp, suite):
     return found.group(1) if found else "counting"
 
 
-
 def scaling_section(inp):
     rows = read(os.path.join(inp, "scaling.csv"))
     if rows is None or "conflicts" not in rows[0]:
@@ -96,13 +95,11 @@ def scaling_section(inp):
     return "\n".join(out)
 
 
-
 def fit_sizes(by_n):
     """The sizes a fit uses: those with at least two seeds (a bootstrap over one seed has no
     spread), when there are at least four of them; else none."""
     sizes = sorted(n for n, v in by_n.items() if len(v) >= 2)
     return sizes if len(sizes) >= 4 else []
-
 
 
 def fit_log(by_n):
@@ -111,7 +108,6 @@ def fit_log(by_n):
     ns = sorted(by_n)
     ys = [mean(by_n[n]) for n in ns]
     return least_squares([[math.log(n) for n in ns], [1.0] * len(ns), [n ** (-1 / 3) for n in ns]], ys)
-
 
 
 def fit_limit(by_n):
@@ -124,7 +120,6 @@ def fit_limit(by_n):
     ns = sorted(by_n)
     return least_squares([[1.0] * len(ns), [n ** (-1 / 3) for n in ns], [n ** (-2 / 3) for n in ns]],
                          [mean(by_n[n]) for n in ns])
-
 
 
 def theorem_meta(inp):
@@ -140,13 +135,14 @@ def theorem_meta(inp):
     return found
 
 
-
 PRECISION_GOAL = 0.005  # issue 10: 95 % intervals within ±0.5 % at the largest n
 
 
-def precision_text(precision, n):
+def precision_text(precision, n, early_seeds):
     """The 95 % intervals' half-widths at the largest n against the goal, and for a quantity that
-    misses it the seeds it would take (the half-width falls like one over the root of the seeds)."""
+    misses it the seeds it would take (the half-width falls like one over the root of the seeds).
+    Σj/n's width is the stratified estimate's where there is one (early_seeds: {dist: seeds of
+    its early part})."""
     names = {"created": "created/n", "deleted": "deleted/n", "conflicts": "Σj/n"}
     parts, missed = [], []
     for dist, seeds, widths in precision:
@@ -158,12 +154,59 @@ def precision_text(precision, n):
             f"{names[k]} ±{100 * w:.2f} %" for k, w in widths.items()))
         for k, w in widths.items():
             if w > PRECISION_GOAL:
-                need = math.ceil(seeds * (w / PRECISION_GOAL) ** 2)
-                missed.append(f"{names[k]} on {dist} (about {need} seeds)")
+                # A stratified Σj/n narrows mostly with the early part's seeds.
+                base = early_seeds.get(dist, 0) if k == "conflicts" else 0
+                need = math.ceil((base or seeds) * (w / PRECISION_GOAL) ** 2)
+                what = "early seeds" if base else "seeds"
+                missed.append(f"{names[k]} on {dist} (about {need} {what})")
     text = (f"*Precision at n = {n} (goal: 95 % intervals within ±{100 * PRECISION_GOAL:.1f} %).* "
+            + ("Σj/n from the early insertions over more seeds where measured (above). "
+               if early_seeds else "")
             + "; ".join(parts) + ". ")
     return text + ("Goal met for every quantity and point set." if not missed else
                    "Goal not met for " + ", ".join(missed) + ".")
+
+
+def early_part(source, n):
+    """The theorem-prefix table at size n: {dist: {seed: the first insertions' Σj/n}} and the
+    prefix length, or ({}, None) without one."""
+    rows = read(os.path.join(source, "theorem-prefix.csv")) or []
+    meta = os.path.join(source, "theorem-prefix.meta.json")
+    found = re.search(r'"prefix":\s*(\d+)', open(meta).read()) if os.path.exists(meta) else None
+    early = defaultdict(dict)
+    for r in rows:
+        if int(r["points"]) == n:
+            early[r["dist"]][int(r["seed"])] = float(r["conflicts_per_point"])
+    return early, int(found.group(1)) if found else None
+
+
+def stratified(whole, early):
+    """Σj/n as the early insertions' mean over all their seeds plus the rest's mean over the
+    whole runs' seeds (a whole run's Σj/n minus its own early part), with a bootstrap interval
+    that resamples the two sets of seeds independently. `whole`: {seed: Σj/n}; `early`:
+    {seed: early Σj/n}, holding every seed of `whole`. Both parts are unbiased, so is the sum;
+    the seeds beyond the whole runs' only narrow the part that varies most."""
+    groups = {"early": list(early.values()),
+              "rest": [whole[s] - early[s] for s in sorted(whole)]}
+    return seed_bootstrap(groups, lambda g: mean(g["early"]) + mean(g["rest"]), seed=57), groups
+
+
+def stratified_text(estimates, n, k):
+    """The stratified Σj/n at the largest n, one clause per point set."""
+    parts = []
+    for dist, (m, lo, hi), groups, whole_width in estimates:
+        rest = groups["rest"]
+        parts.append(f"{dist}: {fmt(m, 1)} [{fmt(lo, 1)}, {fmt(hi, 1)}], ±{100 * max(hi - m, m - lo) / m:.2f} % "
+                     f"(the first {k} insertions over {len(groups['early'])} seeds: {fmt(mean(groups['early']), 1)}; "
+                     f"the rest over {len(rest)}: {fmt(mean(rest), 1)}, spread {fmt(min(rest), 1)}–"
+                     f"{fmt(max(rest), 1)}; whole runs alone ±{100 * whole_width:.2f} %)")
+    return (f"*Σj/n at n = {n}, early insertions over more seeds (generated).* The i-th insertion "
+            "creates tetrahedra whose circumballs hold about n/i points, so Σj/n varies between "
+            "seeds mostly through the first insertions. The `theorem-prefix` suite inserts only "
+            f"the first {k} points of the same orders (same points, seed and bootstrap) and counts "
+            "their conflicts against all n points; Σj/n is then the mean of that early part over "
+            "all its seeds plus the mean of the rest over the whole runs' seeds: "
+            + "; ".join(parts) + ".")
 
 
 def theorem_section(inp, paper=None):
@@ -196,6 +239,8 @@ def theorem_section(inp, paper=None):
     out.append("|---|---|---|---|---|---|---|---|")
     fits = []
     precision = []  # (dist, seeds, {quantity: relative half-width}) at the table's largest n
+    early, prefix_length = early_part(source, ns[-1])
+    estimates = []  # stratified Σj/n at the largest n, where the theorem-prefix table has it
     for dist in dists:
         mine = [r for r in rows if r["dist"] == dist]
         by = {key: defaultdict(list) for key in ("created", "deleted", "conflicts", "walk")}
@@ -224,6 +269,12 @@ def theorem_section(inp, paper=None):
                     v = by[key][n]
                     m, lo, hi = seed_bootstrap({n: v}, lambda g, n=n: mean(g[n]))
                     widths[key] = max(hi - m, m - lo) / m if len(v) > 1 else None
+                whole = {int(r["seed"]): float(r["conflicts_per_point"]) for r in at_n}
+                mine_early = early.get(dist, {})
+                if len(whole) > 1 and set(whole) <= set(mine_early) and len(mine_early) > len(whole):
+                    (m, lo, hi), groups = stratified(whole, mine_early)
+                    estimates.append((dist, (m, lo, hi), groups, widths["conflicts"]))
+                    widths["conflicts"] = max(hi - m, m - lo) / m
                 precision.append((dist, len(by["created"][n]), widths))
         fitted = fit_sizes(by["conflicts"])
         if fitted:
@@ -237,7 +288,11 @@ def theorem_section(inp, paper=None):
     out.append("")
     measured = {d for d, _, _ in precision}
     precision += [(d, 0, {"created": None}) for d in dists if d not in measured]
-    out.append(precision_text(precision, ns[-1]))
+    if estimates:
+        out.append(stratified_text(estimates, ns[-1], prefix_length))
+        out.append("")
+    out.append(precision_text(precision, ns[-1],
+                              {d: len(g["early"]) for d, _, g, _ in estimates}))
     out.append("")
     seconds = defaultdict(float)
     for r in rows:
@@ -284,7 +339,6 @@ def theorem_section(inp, paper=None):
              "are the theorem's and the boundary's, and other boundary terms would shift b.")
     out.append(text)
     return "\n".join(out)
-
 
 
 def quadratic_section(inp):

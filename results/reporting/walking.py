@@ -20,7 +20,6 @@ def walk_rounds(rows):
     return out
 
 
-
 def walk_section(inp):
     rows = read(os.path.join(inp, "walk.csv"))
     if rows is None or "round_first_walk_mean" not in rows[0]:
@@ -96,10 +95,8 @@ def walk_section(inp):
     return "\n".join(out)
 
 
-
 def cache_size(size_bytes):
     return f"{size_bytes >> 20} MiB" if size_bytes >= 1 << 20 else f"{size_bytes >> 10} KiB"
-
 
 
 def locality_section(inp):

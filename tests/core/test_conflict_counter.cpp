@@ -179,6 +179,54 @@ TEST(ConflictCounter, TheSameForEveryLocatorAndStorage) {
     EXPECT_EQ(hashed.counters.conflicts_created, walk.conflicts_created);
 }
 
+// A prefix run inserts the first k points and counts their conflicts against all n: its steps are
+// exactly the first k - 4 steps of the whole run (the bootstrap's conflicts go to the first), for
+// the walk and the conflict graph, which still holds the points it never inserts.
+TEST(ConflictCounter, APrefixRunIsTheStartOfTheWholeRun) {
+    const PointSet points = generate_points("ball", 2500, 4);
+    OrderOptions order;
+    order.seed = 5;
+    const InsertionOrder sequence = make_insertion_order(points.points, order);
+    TriangulateOptions options;
+    options.bootstrap = BootstrapRule::kFirst;
+    ConflictCountingObserver whole(true, 97);
+    const Triangulation all = triangulate_observed(points, sequence.sequence, options, whole);
+    for (const LocateKind locate : {LocateKind::kWalk, LocateKind::kConflictGraph}) {
+        for (const std::size_t k : {4u, 5u, 300u, 2499u, 2500u}) {
+            SCOPED_TRACE(k);
+            options.locate = locate;
+            options.prefix = k;
+            ConflictCountingObserver prefix(true, 97);
+            const Triangulation part =
+                triangulate_observed(points, sequence.sequence, options, prefix);
+            ASSERT_EQ(prefix.steps().size(), k - 4);
+            std::uint64_t created = 0;
+            for (std::size_t s = 0; s < k - 4; ++s) {
+                EXPECT_EQ(prefix.steps()[s].created, whole.steps()[s].created) << s;
+                EXPECT_EQ(prefix.steps()[s].deleted, whole.steps()[s].deleted) << s;
+                EXPECT_EQ(prefix.steps()[s].live, whole.steps()[s].live) << s;
+                created += prefix.steps()[s].created;
+            }
+            const Counters& c = part.counters;
+            if (k > 4) {
+                EXPECT_EQ(c.conflicts_created + c.ghost_conflicts_created, created);
+            }
+            EXPECT_LE(c.tets_created, all.counters.tets_created);
+            if (k == points.size()) {
+                EXPECT_EQ(c.conflicts_created, all.counters.conflicts_created);
+                const auto as_set = [](std::vector<std::array<std::uint32_t, 4>> tets) {
+                    for (auto& t : tets) {
+                        std::sort(t.begin(), t.end());
+                    }
+                    std::sort(tets.begin(), tets.end());
+                    return tets;
+                };
+                EXPECT_EQ(as_set(part.tets), as_set(all.tets));
+            }
+        }
+    }
+}
+
 // The two independent counts: the full conflict graph's lists and the kd-tree counter agree to the
 // unit (run together, the engine checks it and throws otherwise), on random, degenerate and
 // weighted sets, for every order.

@@ -23,6 +23,7 @@ locate    walk conflict-graph
 count-conflicts yes
 brio-ratio 0.125
 bootstrap first
+prefix    50
 n.paper   1000 10000
 seeds.paper 1..5
 )";
@@ -39,6 +40,7 @@ TEST(Suite, ParsesEveryKey) {
     EXPECT_TRUE(suite.count_conflicts);
     EXPECT_EQ(suite.brio_ratio, 0.125);
     EXPECT_TRUE(suite.bootstrap_first);
+    EXPECT_EQ(suite.prefix, 50u);
     EXPECT_EQ(suite.tier("paper").sizes, (std::vector<std::uint64_t>{1000, 10000}));
     EXPECT_EQ(suite.tier("paper").seeds.size(), 5u);
     // Sizes outermost: a long tier stopped part-way has finished its smaller sizes.
@@ -97,6 +99,12 @@ TEST(Suite, MalformedLinesAreNamedByFileAndLine) {
     EXPECT_NE(
         error_of(head + "dist cube\nn.huge 10\n" + rest).find("bad.suite:4: unknown key 'n.huge'"),
         std::string::npos);
+    EXPECT_NE(error_of(head + "dist cube\ncount-conflicts yes\nprefix 3\n" + rest)
+                  .find("bad.suite:5: prefix must be at least 4"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "dist cube\nprefix 100\n" + rest)
+                  .find("prefix needs kind runs and count-conflicts yes"),
+              std::string::npos);
     try {
         parse_suite(head + "dist cube\n" + rest, "bad.suite", "bad").tier("paper");
         ADD_FAILURE() << "a suite without n.paper has no paper tier";
@@ -111,6 +119,7 @@ TEST(Suite, ShippedSuitesParse) {
                              "creation",
                              "scaling",
                              "theorem",
+                             "theorem-prefix",
                              "quadratic",
                              "walk",
                              "adversarial",

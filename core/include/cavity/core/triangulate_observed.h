@@ -51,7 +51,10 @@ void run(const Prepared& prep,
          Triangulation& out) {
     const Geometry& geometry = prep.geometry;
     const std::size_t n = geometry.size();
-    storage.reserve(7 * n + 64, n);
+    // A prefix run inserts the first `last` points; the others are only counted as conflicts.
+    const std::size_t last =
+        options.prefix == 0 ? n : std::clamp<std::size_t>(options.prefix, 4, n);
+    storage.reserve(7 * last + 64, n);
     BowyerWatson<Storage, Observer> engine(geometry, storage, observer);
     observer.on_start(geometry);
     engine.bootstrap(0, 1, 2, 3);
@@ -59,7 +62,7 @@ void run(const Prepared& prep,
     std::vector<TetId> scratch;
     std::vector<VertexId> redundant;
     const std::size_t report_every = std::max<std::size_t>(n / 200, 1024);
-    for (VertexId u = 4; u < n; ++u) {
+    for (VertexId u = 4; u < last; ++u) {
         std::uint64_t steps_before = 0;
         if constexpr (Observer::kCounting) {
             steps_before = observer.counters()->walk_steps;

@@ -81,6 +81,10 @@ struct Suite {
     /// `bootstrap first`: the order's own first four affinely independent points start the
     /// triangulation, so a uniform order stays the permutation Theorem 5.4 assumes.
     bool bootstrap_first = false;
+    /// `prefix K`: every run inserts only the first K points of its order (after the bootstrap
+    /// four), counting their conflicts against all n points: the early part of a full run, whose
+    /// seed-to-seed spread dominates Σj's (core::TriangulateOptions::prefix). 0: whole runs.
+    std::uint64_t prefix = 0;
     bool validate = false;
     std::uint64_t validate_max = UINT64_MAX;  ///< `validate N`: larger runs are not checked
 
