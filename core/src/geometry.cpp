@@ -19,6 +19,12 @@ void Geometry::count(const perturbation::SosVerdict& v,
     }
 }
 
+bool Geometry::tie_breaks_into(const TetVertices& t, VertexId u) const {
+    const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
+    return perturbation::detail::sos_tie(
+               point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys) == Sign::kPos;
+}
+
 bool Geometry::conflicts_solid_exactly(const TetVertices& t, VertexId u, Counters* counters) const {
     const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
     if (!weighted()) {
