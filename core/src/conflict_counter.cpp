@@ -230,12 +230,16 @@ std::uint64_t ConflictCountingObserver::count_ghost(const TetVertices& v) {
     // The engine's ghost conflict is "in front of the hull triangle", or on its plane and inside
     // the perturbed circumdisk: a box whose eight corners are strictly behind the plane holds
     // none (the halfspace is convex), decided exactly.
-    const auto behind = [&](const Box3& box) {
+    // Likewise a box whose corners are all strictly in front holds only conflicts, none of them
+    // a vertex of the triangle (those are on the plane): early in a run the front of a hull
+    // triangle holds a large part of the points, and counting them box by box, not point by
+    // point, is what keeps the first insertions of a 10^7-point run cheap.
+    const auto all_corners = [&](const Box3& box, Sign side) {
         for (int k = 0; k < 8; ++k) {
             const Point3 corner{(k & 1) ? box.hi.x : box.lo.x,
                                 (k & 2) ? box.hi.y : box.lo.y,
                                 (k & 4) ? box.hi.z : box.lo.z};
-            if (predicates::orient3d(a, b, c, corner) != Sign::kNeg) {
+            if (predicates::orient3d(a, b, c, corner) != side) {
                 return false;
             }
         }
@@ -245,14 +249,15 @@ std::uint64_t ConflictCountingObserver::count_ghost(const TetVertices& v) {
     static constexpr std::array<VertexId, 4> kBootstrap{0, 1, 2, 3};
     std::uint64_t j = 0;
     std::uint64_t tests = 0;
-    tree_->query([&](const Box3& box) { return !behind(box); },
-                 [&](std::uint32_t id, const Point3&) {
-                     if (id == v[0] || id == v[1] || id == v[2]) {
-                         return;
-                     }
-                     ++tests;
-                     j += geometry_->conflicts_ghost(v, id, kBootstrap, nullptr) ? 1 : 0;
-                 });
+    j += tree_->count([&](const Box3& box) { return !all_corners(box, Sign::kNeg); },
+                      [&](const Box3& box) { return all_corners(box, Sign::kPos); },
+                      [&](std::uint32_t id, const Point3&) {
+                          if (id == v[0] || id == v[1] || id == v[2]) {
+                              return;
+                          }
+                          ++tests;
+                          j += geometry_->conflicts_ghost(v, id, kBootstrap, nullptr) ? 1 : 0;
+                      });
     totals.conflict_tests += tests;
     return j;
 }
