@@ -46,21 +46,41 @@ struct Reach {
     Point3 centre{};
     double radius = 0;
     double inner = -1;
+    // The two radii squared, rounded toward the safe side by far more than the few roundings
+    // of a squared distance (relative error below 6 units): points are tested without a root.
+    double radius_squared = std::numeric_limits<double>::infinity();
+    double inner_squared = -1;
 
-    bool includes_distance(double computed) const {
-        return std::isfinite(computed) && computed * (1 + kDistanceSlack) < inner;
+    void square_radii() {
+        radius_squared = bounded ? radius * radius * (1 + 4 * kDistanceSlack)
+                                 : std::numeric_limits<double>::infinity();
+        inner_squared = inner > 0 ? inner * inner * (1 - 4 * kDistanceSlack) : -1;
     }
 
-    /// The computed distance from the centre, or NaN (which every test below declines) where the
-    /// coordinates are too large for the error bounds.
-    double distance(const Point3& q) const {
+    /// True when every point of a box with these corners has a squared distance the tests can
+    /// trust (no coordinate beyond kLargest).
+    static bool moderate(const Box3& b) {
+        return std::max(max_abs(b.lo), max_abs(b.hi)) <= kLargest;
+    }
+
+    bool includes_squared(double computed) const {
+        return std::isfinite(computed) && computed < inner_squared;
+    }
+
+    bool excludes_squared(double computed) const {
+        return std::isfinite(computed) && computed > radius_squared;
+    }
+
+    /// The computed squared distance from the centre, or NaN (which every test above declines)
+    /// where the coordinates are too large for the error bounds.
+    double squared_distance(const Point3& q) const {
         if (max_abs(q) > kLargest) {
             return std::numeric_limits<double>::quiet_NaN();
         }
         const double dx = q.x - centre.x;
         const double dy = q.y - centre.y;
         const double dz = q.z - centre.z;
-        return std::sqrt(dx * dx + dy * dy + dz * dz);
+        return dx * dx + dy * dy + dz * dz;
     }
 
     bool includes(const Box3& b) const {
@@ -71,11 +91,7 @@ struct Reach {
         const double dx = std::max(std::fabs(centre.x - b.lo.x), std::fabs(centre.x - b.hi.x));
         const double dy = std::max(std::fabs(centre.y - b.lo.y), std::fabs(centre.y - b.hi.y));
         const double dz = std::max(std::fabs(centre.z - b.lo.z), std::fabs(centre.z - b.hi.z));
-        return includes_distance(std::sqrt(dx * dx + dy * dy + dz * dz));
-    }
-
-    bool excludes_distance(double computed) const {
-        return std::isfinite(computed) && computed * (1 - kDistanceSlack) > radius;
+        return includes_squared(dx * dx + dy * dy + dz * dz);
     }
 
     bool excludes(const Box3& b) const {
@@ -88,7 +104,7 @@ struct Reach {
         const double dx = gap(centre.x, b.lo.x, b.hi.x);
         const double dy = gap(centre.y, b.lo.y, b.hi.y);
         const double dz = gap(centre.z, b.lo.z, b.hi.z);
-        return excludes_distance(std::sqrt(dx * dx + dy * dy + dz * dz));
+        return excludes_squared(dx * dx + dy * dy + dz * dz);
     }
 };
 
@@ -167,6 +183,7 @@ Reach conflict_reach(const Geometry& g, const TetVertices& t, double max_weight)
         const double x_norm_low = x_norm * (1 - 2 * kDistanceSlack);
         reach.inner = (x_norm_low - x_error) * (1 - kDistanceSlack) - centre_error;
     }
+    reach.square_radii();
     return reach;
 }
 
@@ -202,23 +219,52 @@ std::uint64_t ConflictCountingObserver::count_solid(const TetVertices& v) {
     const Reach reach = conflict_reach(*geometry_, v, max_weight_);
     std::uint64_t j = 0;
     std::uint64_t tests = 0;
-    j += tree_->count([&](const Box3& box) { return !reach.bounded || !reach.excludes(box); },
-                      [&](const Box3& box) { return reach.includes(box); },
-                      [&](std::uint32_t id, const Point3& q) {
-                          if (id == v[0] || id == v[1] || id == v[2] || id == v[3]) {
-                              return;
-                          }
-                          const double d = reach.distance(q);
-                          if (reach.bounded && reach.excludes_distance(d)) {
-                              return;
-                          }
-                          if (reach.includes_distance(d)) {
-                              ++j;  // strictly inside: a conflict without the exact test
-                              return;
-                          }
-                          ++tests;
-                          j += geometry_->conflicts_solid(v, id, nullptr) ? 1 : 0;
-                      });
+    const auto test_exactly = [&](std::uint32_t id, const Point3& q) {
+        if (id == v[0] || id == v[1] || id == v[2] || id == v[3]) {
+            return;
+        }
+        const double d = reach.squared_distance(q);
+        if (reach.bounded && reach.excludes_squared(d)) {
+            return;
+        }
+        if (reach.includes_squared(d)) {
+            ++j;  // strictly inside: a conflict without the exact test
+            return;
+        }
+        ++tests;
+        j += geometry_->conflicts_solid(v, id, nullptr) ? 1 : 0;
+    };
+    j += tree_->count_leaves(
+        [&](const Box3& box) { return !reach.bounded || !reach.excludes(box); },
+        [&](const Box3& box) { return reach.includes(box); },
+        [&](const Box3& box, std::span<const std::uint32_t> ids, std::span<const Point3> points) {
+            if (!Reach::moderate(box)) {
+                for (std::size_t k = 0; k < ids.size(); ++k) {
+                    test_exactly(ids[k], points[k]);
+                }
+                return;
+            }
+            // One sweep without a branch per point: points certainly inside are counted, and
+            // only a leaf with a point in the uncertain shell between the two radii (a vertex
+            // of the tetrahedron is always there) is swept again point by point.
+            std::uint64_t inside = 0;
+            bool shell = false;
+            for (const Point3& q : points) {
+                const double dx = q.x - reach.centre.x;
+                const double dy = q.y - reach.centre.y;
+                const double dz = q.z - reach.centre.z;
+                const double d = dx * dx + dy * dy + dz * dz;
+                inside += d < reach.inner_squared ? 1 : 0;
+                shell |= !(d < reach.inner_squared) && !(d > reach.radius_squared);
+            }
+            if (!shell) {
+                j += inside;
+                return;
+            }
+            for (std::size_t k = 0; k < ids.size(); ++k) {
+                test_exactly(ids[k], points[k]);
+            }
+        });
     totals.conflict_tests += tests;
     return j;
 }
@@ -251,11 +297,18 @@ std::uint64_t ConflictCountingObserver::count_ghost(const TetVertices& v) {
     std::uint64_t tests = 0;
     j += tree_->count([&](const Box3& box) { return !all_corners(box, Sign::kNeg); },
                       [&](const Box3& box) { return all_corners(box, Sign::kPos); },
-                      [&](std::uint32_t id, const Point3&) {
+                      [&](std::uint32_t id, const Point3& q) {
                           if (id == v[0] || id == v[1] || id == v[2]) {
                               return;
                           }
                           ++tests;
+                          // The engine's own first test, inline here: only a point on the
+                          // plane needs the rest of it.
+                          const Sign front = predicates::orient3d(a, b, c, q);
+                          if (front != Sign::kZero) {
+                              j += front == Sign::kPos ? 1 : 0;
+                              return;
+                          }
                           j += geometry_->conflicts_ghost(v, id, kBootstrap, nullptr) ? 1 : 0;
                       });
     totals.conflict_tests += tests;

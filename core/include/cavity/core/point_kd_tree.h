@@ -41,6 +41,23 @@ public:
     /// the boxes along its boundary, not to the points it holds.
     template <class MayHold, class HoldsAll, class Visit>
     std::uint64_t count(MayHold&& may_hold, HoldsAll&& holds_all, Visit&& visit) const {
+        return count_leaves(may_hold,
+                            holds_all,
+                            [&](const Box3&,
+                                std::span<const std::uint32_t> ids,
+                                std::span<const predicates::Point3> points) {
+                                for (std::size_t k = 0; k < ids.size(); ++k) {
+                                    visit(ids[k], points[k]);
+                                }
+                            });
+    }
+
+    /// As count(), but hands each remaining leaf whole to visit_leaf(box, ids, points), so that
+    /// a caller can sweep a leaf's points without a branch per point.
+    template <class MayHold, class HoldsAll, class VisitLeaf>
+    std::uint64_t count_leaves(MayHold&& may_hold,
+                               HoldsAll&& holds_all,
+                               VisitLeaf&& visit_leaf) const {
         std::uint64_t whole = 0;
         if (nodes_.empty()) {
             return whole;
@@ -58,9 +75,11 @@ public:
                 continue;
             }
             if (node.left == 0) {
-                for (std::uint32_t k = node.begin; k < node.end; ++k) {
-                    visit(ids_[k], points_[k]);
-                }
+                visit_leaf(
+                    node.box,
+                    std::span<const std::uint32_t>(ids_).subspan(node.begin, node.end - node.begin),
+                    std::span<const predicates::Point3>(points_).subspan(node.begin,
+                                                                         node.end - node.begin));
                 continue;
             }
             stack[top++] = node.left + 1;
