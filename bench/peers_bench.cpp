@@ -13,9 +13,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <sys/resource.h>
 
-#include "cavity/core/generate.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/triangulate.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/order/insertion_order.h"
 
 namespace {
 

@@ -2,15 +2,16 @@
 #include <memory>
 #include <string>
 
-#include "cavity/core/atomic_file.h"
-#include "cavity/core/cdt.h"
-#include "cavity/core/cdt_regions.h"
-#include "cavity/core/cdt_vertex_insertion.h"
-#include "cavity/core/error.h"
-#include "cavity/core/mesh_io.h"
-#include "cavity/core/plc.h"
-#include "cavity/core/point_io.h"
-#include "cavity/core/write_poly.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/cdt/cdt.h"
+#include "cavity/core/cdt/cdt_regions.h"
+#include "cavity/core/cdt/cdt_vertex_insertion.h"
+#include "cavity/core/cdt/read_poly.h"
+#include "cavity/core/input/plc.h"
+#include "cavity/core/io/atomic_file.h"
+#include "cavity/core/io/mesh_io.h"
+#include "cavity/core/io/point_io.h"
+#include "cavity/core/io/write_poly.h"
 #include "commands.h"
 
 namespace cavity::cli {

@@ -3,14 +3,15 @@
 #include <string>
 #include <vector>
 
-#include "cavity/core/cdt_validate.h"
-#include "cavity/core/error.h"
-#include "cavity/core/mesh_io.h"
-#include "cavity/core/orientation.h"
-#include "cavity/core/plc.h"
-#include "cavity/core/point_io.h"
-#include "cavity/core/points_fingerprint.h"
-#include "cavity/core/validate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/cdt/cdt_validate.h"
+#include "cavity/core/cdt/read_poly.h"
+#include "cavity/core/check/orientation.h"
+#include "cavity/core/check/validate.h"
+#include "cavity/core/input/plc.h"
+#include "cavity/core/io/mesh_io.h"
+#include "cavity/core/io/point_io.h"
+#include "cavity/core/io/points_fingerprint.h"
 #include "commands.h"
 #include "integer_option.h"
 #include "out_of_memory.h"

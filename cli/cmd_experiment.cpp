@@ -3,7 +3,7 @@
 #include <memory>
 #include <string>
 
-#include "cavity/core/error.h"
+#include "cavity/core/base/error.h"
 #include "cavity/experiments/harness.h"
 #include "commands.h"
 #include "integer_option.h"

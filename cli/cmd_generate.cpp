@@ -9,8 +9,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cavity/core/generate.h"
-#include "cavity/core/point_io.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/io/point_io.h"
 #include "commands.h"
 #include "integer_option.h"
 #include "out_of_memory.h"

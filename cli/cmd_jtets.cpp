@@ -4,8 +4,8 @@
 #include <memory>
 #include <string>
 
-#include "cavity/core/atomic_file.h"
-#include "cavity/core/point_io.h"
+#include "cavity/core/io/atomic_file.h"
+#include "cavity/core/io/point_io.h"
 #include "cavity/experiments/jtets.h"
 #include "commands.h"
 #include "progress_bar.h"

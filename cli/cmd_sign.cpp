@@ -15,8 +15,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cavity/core/error.h"
-#include "cavity/core/parse_number.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/base/parse_number.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/oracle.h"
 #include "cavity/predicates/orient3d.h"

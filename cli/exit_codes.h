@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "cavity/core/error.h"
+#include "cavity/core/base/error.h"
 
 /// The program's exit statuses, few enough that a script can branch on them (listed in
 /// `cavity --help` and docs/api.md).

@@ -5,7 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cavity/core/error.h"
+#include "cavity/core/base/error.h"
 #include "cavity/core/version.h"
 #include "cavity/predicates/fp_environment.h"
 #include "commands.h"

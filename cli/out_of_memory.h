@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "cavity/core/error.h"
+#include "cavity/core/base/error.h"
 
 namespace cavity::cli {
 

@@ -1,6 +1,6 @@
 #include "point_ids.h"
 
-#include "cavity/core/error.h"
+#include "cavity/core/base/error.h"
 
 namespace cavity::cli {
 

@@ -7,20 +7,17 @@ set(CAVITY_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/cavity" CACHE STRING
     "Install directory of cavity's CMake package, relative to the prefix")
 
 # Static libraries that may end up in a shared object (the Python module, a consumer's plugin).
-set_target_properties(cavity_predicates cavity_oracle cavity_perturbation cavity_core
+# (core's folders set it themselves.)
+set_target_properties(cavity_predicates cavity_oracle cavity_perturbation
                       PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
 # The layers name their headers with a source-relative `include`; an installed package must point
-# at the installed copy instead.
-foreach(_layer predicates perturbation core)
+# at the installed copy instead (core's folders say so themselves).
+foreach(_layer predicates perturbation)
   set_property(TARGET cavity_${_layer} PROPERTY INTERFACE_INCLUDE_DIRECTORIES
                "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/${_layer}/include>"
                "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
 endforeach()
-set_property(TARGET cavity_core APPEND PROPERTY INTERFACE_INCLUDE_DIRECTORIES
-             "$<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/generated>")
-set_property(TARGET cavity_core APPEND PROPERTY INCLUDE_DIRECTORIES
-             "${PROJECT_BINARY_DIR}/generated")
 set_property(TARGET cavity_oracle PROPERTY INTERFACE_INCLUDE_DIRECTORIES
              "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/predicates/include>"
              "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
@@ -44,16 +41,23 @@ set_target_properties(cavity_gmp PROPERTIES EXPORT_NAME gmp)
 # nothing to a consumer's compile flags.
 set_target_properties(cavity_warnings PROPERTIES EXPORT_NAME warnings)
 
-install(TARGETS cavity_predicates cavity_perturbation cavity_core cavity_oracle
+install(TARGETS cavity_predicates cavity_perturbation cavity_core ${CAVITY_CORE_MODULES} cavity_oracle
                 cavity_strict_fp cavity_warnings cavity_gmp
         EXPORT cavityTargets
         ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
         LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
         RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
 install(TARGETS cavity RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
-install(DIRECTORY predicates/include/ perturbation/include/ core/include/
+install(DIRECTORY predicates/include/ perturbation/include/
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
         FILES_MATCHING PATTERN "*.h")
+foreach(_module IN LISTS CAVITY_CORE_MODULES)
+  string(REPLACE "cavity_core_" "" _folder "${_module}")
+  install(DIRECTORY "core/${_folder}/include/" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
+          FILES_MATCHING PATTERN "*.h")
+endforeach()
+unset(_module)
+unset(_folder)
 install(FILES "${PROJECT_BINARY_DIR}/generated/cavity/core/version.h"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/cavity/core")
 install(EXPORT cavityTargets NAMESPACE cavity:: DESTINATION "${CAVITY_INSTALL_CMAKEDIR}")

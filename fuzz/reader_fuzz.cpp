@@ -15,10 +15,11 @@
 
 #include <unistd.h>
 
-#include "cavity/core/error.h"
-#include "cavity/core/mesh_io.h"
-#include "cavity/core/plc.h"
-#include "cavity/core/point_io.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/cdt/read_poly.h"
+#include "cavity/core/input/plc.h"
+#include "cavity/core/io/mesh_io.h"
+#include "cavity/core/io/point_io.h"
 
 namespace {
 

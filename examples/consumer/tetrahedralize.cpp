@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <exception>
 
-#include "cavity/core/error.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/orientation.h"
-#include "cavity/core/point_set.h"
-#include "cavity/core/triangulate.h"
-#include "cavity/core/validate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/check/orientation.h"
+#include "cavity/core/check/validate.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/input/point_set.h"
+#include "cavity/core/order/insertion_order.h"
 
 int main() {
     namespace core = cavity::core;

@@ -13,7 +13,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "cavity/core/error.h"
+#include "cavity/core/base/error.h"
 
 namespace cavity::experiments::detail {
 

@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "cavity/core/error.h"
-#include "cavity/core/insertion_order.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/order/insertion_order.h"
 
 /// Small helpers shared by the measurement files (private to the experiments layer).
 namespace cavity::experiments::detail {

@@ -4,8 +4,8 @@
 #include <queue>
 #include <utility>
 
-#include "cavity/core/error.h"
-#include "cavity/core/triangulate_observed.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/delaunay/triangulate_observed.h"
 
 namespace cavity::experiments {
 

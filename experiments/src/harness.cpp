@@ -5,8 +5,8 @@
 #include <set>
 #include <sstream>
 
-#include "cavity/core/atomic_file.h"
-#include "cavity/core/error.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/io/atomic_file.h"
 #include "cavity/experiments/metadata.h"
 #include "cavity/experiments/run.h"
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cavity/core/error.h"
+#include "cavity/core/base/error.h"
 #include "cavity/perturbation/sos.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"

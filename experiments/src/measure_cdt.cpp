@@ -3,12 +3,12 @@
 #include <cmath>
 #include <numeric>
 
-#include "cavity/core/cdt_validate.h"
-#include "cavity/core/complex_from_tets.h"
-#include "cavity/core/edge_protection.h"
-#include "cavity/core/error.h"
-#include "cavity/core/polygon_insertion.h"
-#include "cavity/core/triangulate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/cdt/cdt_validate.h"
+#include "cavity/core/cdt/edge_protection.h"
+#include "cavity/core/cdt/polygon_insertion.h"
+#include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/experiments/measure.h"
 #include "cavity/experiments/plc_families.h"
 #include "format.h"

@@ -2,9 +2,9 @@
 #include <chrono>
 #include <cmath>
 
-#include "cavity/core/generate.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/triangulate_observed.h"
+#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/creation.h"
 #include "cavity/experiments/jtets.h"
 #include "cavity/experiments/measure.h"

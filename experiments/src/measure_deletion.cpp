@@ -3,14 +3,14 @@
 #include <cstdio>
 
 #include "canonical.h"
-#include "cavity/core/complex_from_tets.h"
-#include "cavity/core/error.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/random.h"
-#include "cavity/core/star.h"
-#include "cavity/core/triangulate.h"
-#include "cavity/core/vertex_deletion.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/edit/vertex_deletion.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/mesh/star.h"
+#include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/measure.h"
 #include "format.h"
 

@@ -2,10 +2,10 @@
 #include <chrono>
 #include <numeric>
 
-#include "cavity/core/conflict_counter.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/random.h"
-#include "cavity/core/triangulate_observed.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/delaunay/conflict_counter.h"
+#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/gen/generate.h"
 #include "cavity/experiments/measure.h"
 #include "format.h"
 

@@ -2,10 +2,10 @@
 #include <chrono>
 #include <cmath>
 
-#include "cavity/core/conflict_counter.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/triangulate_observed.h"
+#include "cavity/core/delaunay/conflict_counter.h"
+#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/measure.h"
 #include "format.h"
 

@@ -1,6 +1,6 @@
 #include <chrono>
 
-#include "cavity/core/generate.h"
+#include "cavity/core/gen/generate.h"
 #include "cavity/experiments/jtets.h"
 #include "cavity/experiments/measure.h"
 #include "format.h"

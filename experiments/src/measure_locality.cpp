@@ -1,10 +1,10 @@
 #include <chrono>
 #include <string>
 
-#include "cavity/core/error.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/triangulate_observed.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/measure.h"
 #include "cavity/experiments/memory_model.h"
 #include "cavity/experiments/traced_storage.h"

@@ -4,11 +4,11 @@
 #include <string>
 
 #include "canonical.h"
-#include "cavity/core/error.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/triangulate.h"
-#include "cavity/core/triangulate_observed.h"
-#include "cavity/core/validate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/check/validate.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/gen/generate.h"
 #include "cavity/experiments/greedy_order.h"
 #include "cavity/experiments/measure.h"
 #include "format.h"

@@ -1,5 +1,5 @@
 // The build without CGAL: the peers suite reports CGAL as unavailable.
-#include "cavity/core/error.h"
+#include "cavity/core/base/error.h"
 #include "peer_engines.h"
 
 namespace cavity::experiments::detail {

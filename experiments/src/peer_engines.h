@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "cavity/core/point_set.h"
+#include "cavity/core/input/point_set.h"
 #include "child_process.h"
 
 /// The engines of the peers suite, each meant to run in a child process of its own

@@ -8,10 +8,10 @@
 #include <set>
 #include <string>
 
-#include "cavity/core/error.h"
-#include "cavity/core/random.h"
-#include "cavity/core/tetrahedron.h"
-#include "cavity/core/triangulate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/mesh/tetrahedron.h"
 #include "cavity/predicates/orient3d.h"
 
 namespace cavity::experiments {

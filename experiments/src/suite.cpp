@@ -7,10 +7,10 @@
 #include <set>
 #include <sstream>
 
-#include "cavity/core/error.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/triangulate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/plc_families.h"
 #include "format.h"
 

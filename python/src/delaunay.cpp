@@ -13,11 +13,11 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/mesh_io.h"
-#include "cavity/core/tet_adjacency.h"
-#include "cavity/core/triangulate.h"
-#include "cavity/core/validate.h"
+#include "cavity/core/check/validate.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/io/mesh_io.h"
+#include "cavity/core/io/tet_adjacency.h"
+#include "cavity/core/order/insertion_order.h"
 #include "input_arrays.h"
 #include "stats_dict.h"
 

@@ -1,7 +1,7 @@
 #include <pybind11/pybind11.h>
 
 #include "bindings.h"
-#include "cavity/core/error.h"
+#include "cavity/core/base/error.h"
 
 namespace cavity::python {
 

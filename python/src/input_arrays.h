@@ -5,7 +5,7 @@
 
 #include <pybind11/numpy.h>
 
-#include "cavity/core/point_set.h"
+#include "cavity/core/input/point_set.h"
 
 /// Checks on the arrays Python hands in, so that every bad input becomes a ValueError naming the
 /// offending row before any C++ work starts.

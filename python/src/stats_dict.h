@@ -2,7 +2,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "cavity/core/counters.h"
+#include "cavity/core/geometry/counters.h"
 
 namespace cavity::python {
 

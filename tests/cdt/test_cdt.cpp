@@ -7,10 +7,11 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/cdt.h"
-#include "cavity/core/cdt_validate.h"
-#include "cavity/core/error.h"
-#include "cavity/core/triangulate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/cdt/cdt.h"
+#include "cavity/core/cdt/cdt_validate.h"
+#include "cavity/core/cdt/read_poly.h"
+#include "cavity/core/delaunay/triangulate.h"
 #include "plc_builders.h"
 
 namespace cavity::core {

@@ -19,10 +19,10 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/cdt_vertex_insertion.h"
-#include "cavity/core/complex_from_tets.h"
-#include "cavity/core/polygon_insertion.h"
-#include "cavity/core/random.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/cdt/cdt_vertex_insertion.h"
+#include "cavity/core/cdt/polygon_insertion.h"
+#include "cavity/core/check/complex_from_tets.h"
 #include "cavity/predicates/orient3d.h"
 
 namespace cavity::core {

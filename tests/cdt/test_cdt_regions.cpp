@@ -8,10 +8,11 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/cdt.h"
-#include "cavity/core/cdt_regions.h"
-#include "cavity/core/error.h"
-#include "cavity/core/write_poly.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/cdt/cdt.h"
+#include "cavity/core/cdt/cdt_regions.h"
+#include "cavity/core/cdt/read_poly.h"
+#include "cavity/core/io/write_poly.h"
 
 namespace cavity::core {
 namespace {

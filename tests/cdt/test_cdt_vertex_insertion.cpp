@@ -12,12 +12,13 @@
 #include <gtest/gtest.h>
 
 #include "canonical.h"
-#include "cavity/core/cdt_validate.h"
-#include "cavity/core/cdt_vertex_insertion.h"
-#include "cavity/core/complex_from_tets.h"
-#include "cavity/core/error.h"
-#include "cavity/core/random.h"
-#include "cavity/core/write_poly.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/cdt/cdt_validate.h"
+#include "cavity/core/cdt/cdt_vertex_insertion.h"
+#include "cavity/core/cdt/read_poly.h"
+#include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/io/write_poly.h"
 #include "plc_builders.h"
 
 namespace cavity::core {

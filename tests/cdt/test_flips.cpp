@@ -7,12 +7,12 @@
 #include <gtest/gtest.h>
 
 #include "canonical.h"
-#include "cavity/core/complex_from_tets.h"
-#include "cavity/core/flips.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/random.h"
-#include "cavity/core/star.h"
-#include "cavity/core/triangulate.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/edit/flips.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/mesh/star.h"
 #include "cavity/predicates/orient3d.h"
 
 namespace cavity::core {

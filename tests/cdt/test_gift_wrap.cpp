@@ -7,11 +7,11 @@
 #include <gtest/gtest.h>
 
 #include "canonical.h"
-#include "cavity/core/error.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/gift_wrap.h"
-#include "cavity/core/triangulate.h"
-#include "cavity/core/validate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/check/validate.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/edit/gift_wrap.h"
+#include "cavity/core/gen/generate.h"
 
 namespace cavity::core {
 namespace {

@@ -7,16 +7,17 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/cdt.h"
-#include "cavity/core/cdt_validate.h"
-#include "cavity/core/edge_protection.h"
-#include "cavity/core/error.h"
-#include "cavity/core/plc_validity.h"
-#include "cavity/core/random.h"
-#include "cavity/core/triangulate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/cdt/cdt.h"
+#include "cavity/core/cdt/cdt_validate.h"
+#include "cavity/core/cdt/edge_protection.h"
+#include "cavity/core/cdt/plc_validity.h"
+#include "cavity/core/cdt/read_poly.h"
+#include "cavity/core/delaunay/triangulate.h"
 #include "plc_builders.h"
 // White-box: the region rule is internal to the core.
-#include "../../core/src/exact_plane.h"
+#include "../../core/cdt/src/exact_plane.h"
 
 namespace cavity::core {
 namespace {

@@ -10,12 +10,12 @@
 #include <boost/multiprecision/cpp_int.hpp>
 #include <gtest/gtest.h>
 
-#include "cavity/core/cdt.h"
-#include "cavity/core/cdt_validate.h"
-#include "cavity/core/complex_from_tets.h"
-#include "cavity/core/error.h"
-#include "cavity/core/random.h"
-#include "cavity/core/triangulate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/cdt/cdt.h"
+#include "cavity/core/cdt/cdt_validate.h"
+#include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/predicates/orient3d.h"
 #include "plc_builders.h"
 

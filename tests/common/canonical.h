@@ -6,7 +6,7 @@
 #include <numeric>
 #include <vector>
 
-#include "cavity/core/triangulate.h"
+#include "cavity/core/delaunay/triangulate.h"
 
 namespace cavity::test {
 

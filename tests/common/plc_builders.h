@@ -5,8 +5,8 @@
 #include <utility>
 #include <vector>
 
-#include "cavity/core/plc.h"
-#include "cavity/core/random.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/input/plc.h"
 
 namespace cavity::test {
 

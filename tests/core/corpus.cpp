@@ -3,8 +3,8 @@
 #include <cmath>
 #include <utility>
 
-#include "cavity/core/generate.h"
-#include "cavity/core/random.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/gen/generate.h"
 
 namespace cavity::test {
 

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "cavity/core/point_set.h"
+#include "cavity/core/input/point_set.h"
 
 namespace cavity::test {
 

@@ -5,11 +5,11 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/bootstrap.h"
-#include "cavity/core/error.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/triangulate_observed.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/geometry/bootstrap.h"
+#include "cavity/core/order/insertion_order.h"
 
 namespace cavity::core {
 namespace {

@@ -8,12 +8,12 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/conflict_counter.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/point_kd_tree.h"
-#include "cavity/core/triangulate.h"
-#include "cavity/core/triangulate_observed.h"
+#include "cavity/core/delaunay/conflict_counter.h"
+#include "cavity/core/delaunay/point_kd_tree.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/order/insertion_order.h"
 #include "cavity/perturbation/sos.h"
 
 namespace cavity::core {

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/error.h"
-#include "cavity/core/triangulate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/delaunay/triangulate.h"
 
 namespace cavity::test {
 namespace {

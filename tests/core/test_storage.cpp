@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/array_storage.h"
-#include "cavity/core/face_hash_storage.h"
-#include "cavity/core/random.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/mesh/array_storage.h"
+#include "cavity/core/mesh/face_hash_storage.h"
 
 namespace cavity::test {
 namespace {

@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "canonical.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/triangulate.h"
-#include "cavity/core/validate.h"
+#include "cavity/core/check/validate.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/order/insertion_order.h"
 #include "corpus.h"
 
 namespace cavity::test {

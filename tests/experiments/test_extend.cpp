@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/error.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/triangulate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/gen/generate.h"
 #include "cavity/experiments/measure.h"
 #include "cavity/experiments/suite.h"
 

@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/complex_from_tets.h"
-#include "cavity/core/error.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/triangulate.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/gen/generate.h"
 #include "cavity/experiments/greedy_order.h"
 
 namespace cavity::experiments {

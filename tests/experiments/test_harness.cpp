@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/error.h"
+#include "cavity/core/base/error.h"
 #include "cavity/experiments/harness.h"
 
 namespace cavity::experiments {

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "cavity/core/generate.h"
+#include "cavity/core/gen/generate.h"
 #include "cavity/experiments/jtets.h"
 
 namespace cavity::experiments {

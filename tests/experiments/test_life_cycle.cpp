@@ -3,9 +3,9 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/generate.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/triangulate_observed.h"
+#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/creation.h"
 #include "cavity/experiments/life_cycle.h"
 #include "cavity/predicates/insphere.h"

@@ -4,10 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/generate.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/triangulate.h"
-#include "cavity/core/triangulate_observed.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/memory_model.h"
 #include "cavity/experiments/traced_storage.h"
 

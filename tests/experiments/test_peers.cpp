@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/error.h"
+#include "cavity/core/base/error.h"
 #include "cavity/experiments/harness.h"
 #include "cavity/experiments/run.h"
 #include "cavity/experiments/suite.h"

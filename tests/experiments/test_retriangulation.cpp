@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/error.h"
-#include "cavity/core/plc.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/input/plc.h"
 #include "cavity/experiments/harness.h"
 #include "cavity/experiments/plc_families.h"
 #include "cavity/experiments/run.h"

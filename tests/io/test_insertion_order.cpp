@@ -9,11 +9,11 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/error.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/random.h"
-#include "cavity/core/spatial_sort.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/order/insertion_order.h"
+#include "cavity/core/order/spatial_sort.h"
 
 namespace cavity::core {
 namespace {

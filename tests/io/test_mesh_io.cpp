@@ -7,12 +7,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "cavity/core/atomic_file.h"
-#include "cavity/core/error.h"
-#include "cavity/core/mesh_io.h"
-#include "cavity/core/orientation.h"
-#include "cavity/core/point_io.h"
-#include "cavity/core/points_fingerprint.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/check/orientation.h"
+#include "cavity/core/io/atomic_file.h"
+#include "cavity/core/io/mesh_io.h"
+#include "cavity/core/io/point_io.h"
+#include "cavity/core/io/points_fingerprint.h"
 #include "temp_dir.h"
 
 namespace cavity::core {

@@ -4,15 +4,15 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/cdt.h"
-#include "cavity/core/complex_from_tets.h"
-#include "cavity/core/error.h"
-#include "cavity/core/generate.h"
-#include "cavity/core/gift_wrap.h"
-#include "cavity/core/insertion_order.h"
-#include "cavity/core/orientation.h"
-#include "cavity/core/triangulate.h"
-#include "cavity/core/vertex_deletion.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/cdt/cdt.h"
+#include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/check/orientation.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/edit/gift_wrap.h"
+#include "cavity/core/edit/vertex_deletion.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/order/insertion_order.h"
 
 namespace cavity::core {
 namespace {

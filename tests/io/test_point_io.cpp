@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/error.h"
-#include "cavity/core/point_io.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/io/point_io.h"
 #include "temp_dir.h"
 
 namespace cavity::core {

@@ -4,7 +4,7 @@
 #include <map>
 #include <span>
 
-#include "cavity/core/point_set.h"
+#include "cavity/core/input/point_set.h"
 
 /// The exact creation rule of §5.4, checked tetrahedron by tetrahedron on one run.
 namespace cavity::experiments {

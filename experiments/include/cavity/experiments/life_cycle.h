@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "cavity/core/observer.h"
+#include "cavity/core/delaunay/observer.h"
 
 /// The life of every tetrahedron one run creates (experiments.md §2.2): which vertices, when it
 /// was created, when deleted. For generic input the chapter's analysis predicts both exactly: a

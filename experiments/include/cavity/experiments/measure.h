@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cavity/core/point_set.h"
+#include "cavity/core/input/point_set.h"
 #include "cavity/experiments/run.h"
 
 /// The measurements of each suite kind (one file each); execute_run dispatches to them.

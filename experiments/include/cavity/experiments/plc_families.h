@@ -4,7 +4,7 @@
 #include <span>
 #include <string_view>
 
-#include "cavity/core/plc.h"
+#include "cavity/core/input/plc.h"
 
 /// Families of piecewise linear complexes of growing size, for the polygon-insertion experiments
 /// (Cheng, Dey & Shewchuk §5.8, Propositions 5.5-5.6). Every coordinate is a dyadic rational with

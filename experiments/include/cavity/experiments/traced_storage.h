@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cavity/core/array_storage.h"
+#include "cavity/core/mesh/array_storage.h"
 #include "cavity/experiments/memory_model.h"
 
 namespace cavity::experiments {

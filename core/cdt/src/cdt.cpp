@@ -1,0 +1,103 @@
+#include "cavity/core/cdt/cdt.h"
+
+#include <algorithm>
+#include <string>
+
+#include "cavity/core/base/error.h"
+#include "cavity/core/cdt/cdt_validate.h"
+#include "cavity/core/cdt/cdt_vertex_insertion.h"
+#include "cavity/core/cdt/plc_validity.h"
+#include "cavity/core/check/complex_from_tets.h"
+
+namespace cavity::core {
+
+namespace {
+
+std::string edge_list(const Plc& plc, const std::vector<Edge>& edges) {
+    std::string s;
+    const auto base = static_cast<std::uint32_t>(plc.points.index_base);
+    for (std::size_t i = 0; i < edges.size() && i < 20; ++i) {
+        s += " " + std::to_string(edges[i][0] + base) + "-" + std::to_string(edges[i][1] + base);
+    }
+    if (edges.size() > 20) {
+        s += " ...";
+    }
+    return s;
+}
+
+/// The Delaunay triangulation of the PLC's points, refused when two coincide or a PLC edge is
+/// missing from it (the flip-based construction needs edge protection).
+std::vector<std::array<std::uint32_t, 4>> protected_delaunay(const Plc& plc) {
+    std::vector<std::array<std::uint32_t, 4>> tets = plc_delaunay(plc);
+    const std::vector<Edge> missing = unprotected_edges(plc, tets);
+    if (!missing.empty()) {
+        throw Error(located_message(
+            plc.source,
+            std::nullopt,
+            "the PLC is not edge-protected: " + std::to_string(missing.size()) +
+                " edge(s) are not Delaunay edges of its vertices:" + edge_list(plc, missing) +
+                " (the flip-based CDT needs edge protection; --protect splits them)"));
+    }
+    require_valid_plc(plc, tets);
+    return tets;
+}
+
+}  // namespace
+
+LiveCdt::LiveCdt(Plc plc, const CdtOptions& options)
+    : protection_(options.protect ? protect_edges(plc, options.max_protection_points)
+                                  : Protection{})
+    , plc_(std::move(plc))
+    , geometry_(geometry_by_index(plc_.points)) {
+    storage_ = complex_from_tets(protected_delaunay(plc_));
+    ConstrainedFaces constrained;
+    for (std::size_t f = 0; f < plc_.facets.size(); ++f) {
+        for (const auto& g :
+             insert_polygon(storage_, geometry_, plc_, f, constrained, polygon_counters_)) {
+            add_face(g, static_cast<std::uint32_t>(f));
+        }
+    }
+    for (const auto& e : plc_edges(plc_)) {
+        plc_edges_.insert(e);
+    }
+    validate();
+}
+
+std::vector<std::array<std::uint32_t, 4>> LiveCdt::tets() const {
+    return solid_tets(storage_);
+}
+
+void LiveCdt::validate() const {
+    const CdtValidation check = validate_cdt(plc_, tets());
+    const std::vector<std::string> complex = check_complex(storage_, geometry_);
+    if (check.ok() && complex.empty()) {
+        return;
+    }
+    std::string message = "internal error: the constructed mesh is not a CDT (" +
+                          std::to_string(check.problem_count + complex.size()) + " problem(s)):";
+    for (const auto& p : check.problems) {
+        message += "\n  " + p;
+    }
+    for (std::size_t i = 0; i < complex.size() && i < 20; ++i) {
+        message += "\n  " + complex[i];
+    }
+    throw Error(located_message(plc_.source, std::nullopt, message));
+}
+
+Cdt LiveCdt::snapshot() const {
+    Cdt cdt;
+    cdt.plc = plc_;
+    cdt.tets = tets();
+    cdt.faces = faces_;
+    cdt.protection = protection_;
+    cdt.counters = polygon_counters_;
+    cdt.inserted = inserted_;
+    cdt.insertion = counters_;
+    return cdt;
+}
+
+Cdt build_cdt(Plc plc, const CdtOptions& options) {
+    return LiveCdt(std::move(plc), options).snapshot();
+}
+
+}  // namespace cavity::core

@@ -1,0 +1,109 @@
+#pragma once
+
+// Exact rational geometry of PLC facets (Boost.Multiprecision over GMP): the plane of a facet,
+// which side of it a vertex lies on, where an edge crosses it, and whether a point of the plane
+// lies in the facet's region. Used by the reader (coplanarity), polygon insertion and the CDT
+// validator; never on a hot path of Delaunay triangulation.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <boost/multiprecision/gmp.hpp>
+
+#include "cavity/core/input/plc.h"
+#include "cavity/predicates/sign.h"
+
+namespace cavity::core {
+
+using Rational = boost::multiprecision::mpq_rational;
+using ExactPoint = std::array<Rational, 3>;
+
+ExactPoint exact_point(const Point3& p);
+
+/// Vector arithmetic on exact points.
+inline ExactPoint minus(const ExactPoint& p, const ExactPoint& q) {
+    return {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+}
+
+inline ExactPoint cross(const ExactPoint& u, const ExactPoint& v) {
+    return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+
+inline Rational dot(const ExactPoint& u, const ExactPoint& v) {
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+
+inline bool is_zero(const ExactPoint& v) {
+    return v[0] == 0 && v[1] == 0 && v[2] == 0;
+}
+
+/// The plane through three non-collinear points a, b, c, with normal n = (b - a) x (c - a).
+class ExactPlane {
+public:
+    /// The plane of a facet: through its first three non-collinear loop corners; nullopt when every
+    /// corner is collinear.
+    static std::optional<ExactPlane> of_facet(const Plc& plc, const PlcFacet& facet);
+
+    /// n . (p - a): positive on the side n points to. Proportional to the signed distance, without
+    /// radicals (the chapter's advice for d(v, h) in §5.8).
+    Rational offset(const Point3& p) const;
+    /// The sign of offset(p), by the exact orient3d predicate (no rational arithmetic).
+    predicates::Sign side(const Point3& p) const;
+    /// The point where segment pq meets the plane (p and q strictly on opposite sides).
+    ExactPoint crossing(const Point3& p, const Point3& q) const;
+
+    /// The coordinate dropped to project the plane one-to-one onto a coordinate plane: the axis of
+    /// the largest normal component.
+    int dropped_axis() const { return drop_; }
+
+private:
+    std::array<Point3, 3> corners_;  ///< the three corners that define the plane
+    ExactPoint a_;
+    ExactPoint n_;
+    int drop_ = 2;
+};
+
+/// True when x (a point of the facet's plane, not on any loop side) lies in the facet's region, by
+/// TetGen's rule (see PlcFacet): x is inside at least one loop, and no hole point of the facet lies
+/// in the same face of the loops' arrangement, i.e. no hole point is inside exactly the same loops
+/// as x. Exact, in the projection that drops `plane.dropped_axis()`.
+bool in_facet_region(const Plc& plc,
+                     const PlcFacet& facet,
+                     const ExactPlane& plane,
+                     const ExactPoint& x);
+
+/// Twice the area of the facet's region (the same rule), measured in the projection (exact). With
+/// non-crossing loops every face of the arrangement is "inside loop L, outside L's children": its
+/// area is L's minus its children's, and it counts unless a hole point lies in it.
+Rational facet_region_area2(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane);
+
+/// Where a point of the plane lies with respect to one loop, in the projection.
+enum class LoopPosition { kOutside, kOnBoundary, kInside };
+LoopPosition loop_position(const Plc& plc,
+                           const std::vector<std::uint32_t>& loop,
+                           int drop,
+                           const ExactPoint& x);
+
+/// How the sides of loop `a` lie with respect to loop `b` (coplanar): each side is cut at the
+/// corners of b that lie on it and each piece is classified by its midpoint. For loops whose sides
+/// do not cross, a piece is wholly inside, outside or on b: `a` is nested in b when it has pieces
+/// inside and none outside, and the two loops overlap without nesting (they cross) when either has
+/// pieces both inside and outside the other.
+struct SidePieces {
+    std::size_t inside = 0;
+    std::size_t outside = 0;
+    std::size_t on_boundary = 0;
+};
+
+SidePieces side_pieces(const Plc& plc,
+                       const std::vector<std::uint32_t>& a,
+                       const std::vector<std::uint32_t>& b,
+                       int drop);
+
+/// Twice the absolute area of triangle abc in the same projection.
+Rational triangle_area2(const ExactPlane& plane, const Point3& a, const Point3& b, const Point3& c);
+
+}  // namespace cavity::core

@@ -1,0 +1,467 @@
+#include "cavity/core/cdt/plc_validity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "cavity/core/base/error.h"
+#include "cavity/core/cdt/edge_protection.h"
+#include "exact_plane.h"
+
+namespace cavity::core {
+
+namespace {
+
+struct Box {
+    std::array<double, 3> lo{std::numeric_limits<double>::infinity(),
+                             std::numeric_limits<double>::infinity(),
+                             std::numeric_limits<double>::infinity()};
+    std::array<double, 3> hi{-std::numeric_limits<double>::infinity(),
+                             -std::numeric_limits<double>::infinity(),
+                             -std::numeric_limits<double>::infinity()};
+
+    void add(const Point3& p) {
+        const std::array<double, 3> c{p.x, p.y, p.z};
+        for (std::size_t k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], c[k]);
+            hi[k] = std::max(hi[k], c[k]);
+        }
+    }
+
+    bool contains(const Box& other) const {
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (other.lo[k] < lo[k] || hi[k] < other.hi[k]) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /// Closed boxes: touching counts, since a corner on a facet's boundary matters.
+    bool meets(const Box& other) const {
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (hi[k] < other.lo[k] || other.hi[k] < lo[k]) {
+                return false;
+            }
+        }
+        return true;
+    }
+};
+
+Box loop_box(const Plc& plc, const std::vector<std::uint32_t>& loop) {
+    Box box;
+    for (std::uint32_t c : loop) {
+        box.add(plc.points.points[c]);
+    }
+    return box;
+}
+
+/// A uniform grid over the points' bounding box holding the edges by the cells their boxes cover,
+/// so a facet meets only the edges registered in the cells of its own box. Cell indices come from
+/// one monotone function of a coordinate, so boxes that meet always share a cell.
+class EdgeGrid {
+public:
+    EdgeGrid(const Plc& plc, const std::vector<Box>& edge_boxes) {
+        Box all;
+        for (const Point3& p : plc.points.points) {
+            all.add(p);
+        }
+        bounds_ = all;
+        const auto n = static_cast<double>(edge_boxes.size());
+        resolution_ =
+            std::clamp(static_cast<std::size_t>(std::cbrt(n)), std::size_t{1}, std::size_t{64});
+        cells_.resize(resolution_ * resolution_ * resolution_);
+        for (std::size_t e = 0; e < edge_boxes.size(); ++e) {
+            const auto [lo, hi] = range(edge_boxes[e]);
+            std::size_t count = 1;
+            for (std::size_t k = 0; k < 3; ++k) {
+                count *= hi[k] - lo[k] + 1;
+            }
+            if (count > kMaxCellsPerEdge) {
+                everywhere_.push_back(e);  // a long diagonal edge: test it against every facet
+                continue;
+            }
+            for_cells(lo, hi, [&](std::size_t cell) { cells_[cell].push_back(e); });
+        }
+        stamp_.assign(edge_boxes.size(), kNever);
+    }
+
+    /// The edges registered in the cells of `box` (each once), for the query numbered `query`.
+    std::vector<std::size_t> near(const Box& box, std::size_t query) {
+        std::vector<std::size_t> out = everywhere_;
+        const auto [lo, hi] = range(box);
+        for_cells(lo, hi, [&](std::size_t cell) {
+            for (std::size_t e : cells_[cell]) {
+                if (stamp_[e] != query) {
+                    stamp_[e] = query;
+                    out.push_back(e);
+                }
+            }
+        });
+        return out;
+    }
+
+private:
+    static constexpr std::size_t kMaxCellsPerEdge = 64;
+    static constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
+    using Index3 = std::array<std::size_t, 3>;
+
+    std::size_t cell_of(double x, std::size_t k) const {
+        const double width = bounds_.hi[k] - bounds_.lo[k];
+        if (!(width > 0)) {
+            return 0;
+        }
+        const double f = std::floor((x - bounds_.lo[k]) / width * static_cast<double>(resolution_));
+        return static_cast<std::size_t>(std::clamp(f, 0.0, static_cast<double>(resolution_ - 1)));
+    }
+
+    std::pair<Index3, Index3> range(const Box& box) const {
+        Index3 lo{};
+        Index3 hi{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            lo[k] = cell_of(box.lo[k], k);
+            hi[k] = cell_of(box.hi[k], k);
+        }
+        return {lo, hi};
+    }
+
+    template <class F>
+    void for_cells(const Index3& lo, const Index3& hi, F&& f) const {
+        for (std::size_t i = lo[0]; i <= hi[0]; ++i) {
+            for (std::size_t j = lo[1]; j <= hi[1]; ++j) {
+                for (std::size_t k = lo[2]; k <= hi[2]; ++k) {
+                    f((i * resolution_ + j) * resolution_ + k);
+                }
+            }
+        }
+    }
+
+    Box bounds_;
+    std::size_t resolution_ = 1;
+    std::vector<std::vector<std::size_t>> cells_;
+    std::vector<std::size_t> everywhere_;
+    std::vector<std::size_t> stamp_;
+};
+
+/// A PLC edge and the facets that have it as a side (none: an explicit segment only).
+struct OwnedEdge {
+    Edge edge;
+    std::vector<std::size_t> owners;
+};
+
+std::vector<OwnedEdge> owned_edges(const Plc& plc) {
+    std::vector<std::pair<Edge, std::size_t>> sides;
+    for (std::size_t f = 0; f < plc.facets.size(); ++f) {
+        for (const auto& loop : plc.facets[f].loops) {
+            for (std::size_t i = 0; i < loop.size(); ++i) {
+                const std::uint32_t a = loop[i];
+                const std::uint32_t b = loop[(i + 1) % loop.size()];
+                sides.push_back({{std::min(a, b), std::max(a, b)}, f});
+            }
+        }
+    }
+    std::sort(sides.begin(), sides.end());
+    sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+    std::vector<OwnedEdge> all;
+    for (const Edge& e : plc_edges(plc)) {
+        OwnedEdge owned{e, {}};
+        auto it = std::lower_bound(sides.begin(), sides.end(), std::make_pair(e, std::size_t{0}));
+        for (; it != sides.end() && it->first == e; ++it) {
+            owned.owners.push_back(it->second);
+        }
+        all.push_back(std::move(owned));
+    }
+    return all;
+}
+
+std::vector<Edge> facet_sides(const PlcFacet& facet) {
+    std::vector<Edge> sides;
+    for (const auto& loop : facet.loops) {
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const std::uint32_t a = loop[i];
+            const std::uint32_t b = loop[(i + 1) % loop.size()];
+            sides.push_back({std::min(a, b), std::max(a, b)});
+        }
+    }
+    std::sort(sides.begin(), sides.end());
+    return sides;
+}
+
+std::string loop_name(const Plc& plc, const std::vector<std::uint32_t>& loop, std::size_t index) {
+    std::string s = "polygon " + std::to_string(index + 1) + " (corners";
+    for (std::size_t i = 0; i < loop.size() && i < 6; ++i) {
+        s += " " + std::to_string(loop[i] + static_cast<std::uint32_t>(plc.points.index_base));
+    }
+    return s + (loop.size() > 6 ? " ...)" : ")");
+}
+
+/// Collects the messages of one facet, each located at the facet's line.
+class FacetReport {
+public:
+    FacetReport(const Plc& plc, std::size_t f, std::vector<std::string>& out)
+        : plc_(plc), facet_(plc.facets[f]), out_(out) {
+        const auto base = static_cast<std::size_t>(plc.points.index_base);
+        label_ = "facet " + std::to_string(facet_.line == 0 ? f + base : facet_.number);
+    }
+
+    void add(const std::string& what) {
+        out_.push_back(located_message(
+            plc_.source,
+            facet_.line == 0 ? std::nullopt : std::optional<std::size_t>(facet_.line),
+            label_ + ": " + what));
+    }
+
+private:
+    const Plc& plc_;
+    const PlcFacet& facet_;
+    std::vector<std::string>& out_;
+    std::string label_;
+};
+
+std::string edge_name(const Plc& plc, const Edge& e) {
+    const auto base = static_cast<std::uint32_t>(plc.points.index_base);
+    return "edge " + std::to_string(e[0] + base) + "-" + std::to_string(e[1] + base);
+}
+
+/// True when every corner of facet g lies in `plane`.
+bool coplanar(const Plc& plc, const PlcFacet& g, const ExactPlane& plane) {
+    for (const auto& loop : g.loops) {
+        for (std::uint32_t c : loop) {
+            if (plane.side(plc.points.points[c]) != predicates::Sign::kZero) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+/// Loops of one facet must overlap only by nesting.
+void check_loops(const Plc& plc, const PlcFacet& facet, int drop, FacetReport& report) {
+    std::vector<Box> boxes;
+    for (const auto& loop : facet.loops) {
+        boxes.push_back(loop_box(plc, loop));
+    }
+    for (std::size_t i = 0; i < facet.loops.size(); ++i) {
+        for (std::size_t j = i + 1; j < facet.loops.size(); ++j) {
+            if (!boxes[i].meets(boxes[j])) {
+                continue;
+            }
+            const SidePieces a = side_pieces(plc, facet.loops[i], facet.loops[j], drop);
+            const SidePieces b = side_pieces(plc, facet.loops[j], facet.loops[i], drop);
+            if ((a.inside > 0 && a.outside > 0) || (b.inside > 0 && b.outside > 0)) {
+                report.add(loop_name(plc, facet.loops[i], i) + " and " +
+                           loop_name(plc, facet.loops[j], j) +
+                           " cross: they overlap without one enclosing the other");
+            }
+        }
+    }
+}
+
+void check_holes(const Plc& plc, const PlcFacet& facet, int drop, FacetReport& report) {
+    for (std::size_t h = 0; h < facet.holes.size(); ++h) {
+        for (std::size_t i = 0; i < facet.loops.size(); ++i) {
+            if (loop_position(plc, facet.loops[i], drop, exact_point(facet.holes[h])) ==
+                LoopPosition::kOnBoundary) {
+                report.add("hole point " +
+                           std::to_string(h + static_cast<std::size_t>(plc.points.index_base)) +
+                           " lies on a side of " + loop_name(plc, facet.loops[i], i));
+            }
+        }
+    }
+}
+
+/// True when p lies on the open segment ab.
+bool inside_segment(const ExactPoint& a, const ExactPoint& b, const ExactPoint& p) {
+    const ExactPoint d = minus(b, a);
+    const ExactPoint w = minus(p, a);
+    if (!is_zero(cross(w, d))) {
+        return false;
+    }
+    const Rational s = dot(w, d);
+    return s > 0 && s < dot(d, d);
+}
+
+/// True when segments ab and cd (four distinct points) cross at one point interior to both: they
+/// are coplanar, not collinear, and each separates the other's endpoints strictly in their plane.
+bool segments_cross(const ExactPoint& a,
+                    const ExactPoint& b,
+                    const ExactPoint& c,
+                    const ExactPoint& d) {
+    const ExactPoint u = minus(b, a);
+    const ExactPoint n = cross(u, minus(d, c));
+    if (is_zero(n) || dot(n, minus(c, a)) != 0) {
+        return false;  // parallel (overlaps are points inside segments) or skew
+    }
+    const auto side = [&](const ExactPoint& p, const ExactPoint& q, const ExactPoint& r) {
+        const Rational s = dot(n, cross(minus(q, p), minus(r, p)));
+        return s > 0 ? 1 : s < 0 ? -1 : 0;
+    };
+    return side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0;
+}
+
+}  // namespace
+
+std::vector<std::string> edge_violations(const Plc& plc,
+                                         std::span<const std::array<std::uint32_t, 2>> edges) {
+    std::vector<std::string> out;
+    const auto base = static_cast<std::uint32_t>(plc.points.index_base);
+    const auto& pts = plc.points.points;
+    const auto box_of = [&](std::uint32_t i, std::uint32_t j) {
+        Box box;
+        box.add(pts[i]);
+        box.add(pts[j]);
+        return box;
+    };
+    const auto ids = [&](const Edge& e) {
+        return std::to_string(e[0] + base) + "-" + std::to_string(e[1] + base);
+    };
+    const std::vector<Edge> all = plc_edges(plc);
+    for (const Edge& e : edges) {
+        const Box box = box_of(e[0], e[1]);
+        const ExactPoint a = exact_point(pts[e[0]]);
+        const ExactPoint b = exact_point(pts[e[1]]);
+        for (std::uint32_t v = 0; v < pts.size(); ++v) {
+            if (v != e[0] && v != e[1] && box.meets(box_of(v, v)) &&
+                inside_segment(a, b, exact_point(pts[v]))) {
+                out.push_back(located_message(
+                    plc.source,
+                    std::nullopt,
+                    "point " + std::to_string(v + base) + " lies inside edge " + ids(e)));
+            }
+        }
+        for (const Edge& f : all) {
+            if (f[0] == e[0] || f[0] == e[1] || f[1] == e[0] || f[1] == e[1] ||
+                !box.meets(box_of(f[0], f[1]))) {
+                continue;
+            }
+            if (segments_cross(a, b, exact_point(pts[f[0]]), exact_point(pts[f[1]]))) {
+                out.push_back(located_message(
+                    plc.source, std::nullopt, "edges " + ids(e) + " and " + ids(f) + " cross"));
+            }
+        }
+    }
+    return out;
+}
+
+std::vector<std::string> plc_violations(
+    const Plc& plc, std::span<const std::array<std::uint32_t, 4>> delaunay_tets) {
+    std::vector<std::string> out;
+    const auto base = static_cast<std::uint32_t>(plc.points.index_base);
+    const std::vector<Edge> missing = unprotected_edges(plc, delaunay_tets);
+    if (!missing.empty()) {
+        std::string s = "cannot check the PLC: " + std::to_string(missing.size()) +
+                        " edge(s) are not Delaunay edges of its points (protect them first):";
+        for (std::size_t i = 0; i < missing.size() && i < 20; ++i) {
+            s += " " + std::to_string(missing[i][0] + base) + "-" +
+                 std::to_string(missing[i][1] + base);
+        }
+        out.push_back(located_message(plc.source, std::nullopt, s));
+        return out;
+    }
+    const std::vector<OwnedEdge> edges = owned_edges(plc);
+    std::vector<Box> edge_boxes;
+    edge_boxes.reserve(edges.size());
+    for (const OwnedEdge& e : edges) {
+        Box box;
+        box.add(plc.points.points[e.edge[0]]);
+        box.add(plc.points.points[e.edge[1]]);
+        edge_boxes.push_back(box);
+    }
+    EdgeGrid grid(plc, edge_boxes);
+    const auto& pts = plc.points.points;
+    for (std::size_t f = 0; f < plc.facets.size(); ++f) {
+        const PlcFacet& facet = plc.facets[f];
+        FacetReport report(plc, f, out);
+        const auto plane = ExactPlane::of_facet(plc, facet);
+        if (!plane) {
+            report.add("its corners are collinear");
+            continue;
+        }
+        check_loops(plc, facet, plane->dropped_axis(), report);
+        check_holes(plc, facet, plane->dropped_axis(), report);
+        Box box;
+        for (const auto& loop : facet.loops) {
+            for (std::uint32_t c : loop) {
+                box.add(pts[c]);
+            }
+        }
+        const std::vector<Edge> sides = facet_sides(facet);
+        std::vector<std::size_t> near = grid.near(box, f);
+        std::sort(near.begin(), near.end());
+        for (std::size_t i : near) {
+            const OwnedEdge& e = edges[i];
+            if (!edge_boxes[i].meets(box) ||
+                std::binary_search(sides.begin(), sides.end(), e.edge)) {
+                continue;
+            }
+            const Point3& p = pts[e.edge[0]];
+            const Point3& q = pts[e.edge[1]];
+            const auto sp = static_cast<int>(plane->side(p));
+            const auto sq = static_cast<int>(plane->side(q));
+            // By the precondition the edge meets no side of the facet except at a shared corner,
+            // so the point tested below is on no loop side and decides for the whole edge.
+            if (sp == 0 && sq == 0) {
+                // An edge lying in the region is legal (a slit, or the foot of a wall: the edge is
+                // a cell, and the CDT has it as an edge among the polygon's triangles), unless it
+                // is a side of a coplanar facet, whose region then overlaps this one.
+                const auto g = std::find_if(e.owners.begin(), e.owners.end(), [&](std::size_t o) {
+                    return coplanar(plc, plc.facets[o], *plane);
+                });
+                // An edge in the region is inside the facet's box: a cheap, exact filter.
+                if (g == e.owners.end() || !box.contains(edge_boxes[i])) {
+                    continue;
+                }
+                const ExactPoint a = exact_point(p);
+                const ExactPoint b = exact_point(q);
+                const ExactPoint mid{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
+                if (in_facet_region(plc, facet, *plane, mid)) {
+                    report.add(edge_name(plc, e.edge) + ", a side of " + facet_name(plc, *g) +
+                               ", lies inside it: the two coplanar facets overlap");
+                }
+            } else if (sp * sq < 0 && in_facet_region(plc, facet, *plane, plane->crossing(p, q))) {
+                report.add(edge_name(plc, e.edge) +
+                           (e.owners.empty()
+                                ? " (a segment)"
+                                : " (a side of " + facet_name(plc, e.owners[0]) + ")") +
+                           " crosses it");
+            }
+        }
+    }
+    return out;
+}
+
+namespace {
+
+void throw_violations(const std::vector<std::string>& problems, const std::string& what) {
+    std::string message = what + " (" + std::to_string(problems.size()) + " violation(s)):";
+    for (std::size_t i = 0; i < problems.size() && i < 20; ++i) {
+        message += "\n  " + problems[i];
+    }
+    if (problems.size() > 20) {
+        message += "\n  ...";
+    }
+    throw Error(message);
+}
+
+}  // namespace
+
+void require_valid_plc(const Plc& plc,
+                       std::span<const std::array<std::uint32_t, 4>> delaunay_tets) {
+    const std::vector<std::string> problems = plc_violations(plc, delaunay_tets);
+    if (!problems.empty()) {
+        throw_violations(problems, "the input is not a piecewise linear complex");
+    }
+}
+
+void require_edges_meet_properly(const Plc& plc,
+                                 std::span<const std::array<std::uint32_t, 2>> edges) {
+    const std::vector<std::string> problems = edge_violations(plc, edges);
+    if (!problems.empty()) {
+        throw_violations(problems,
+                         "the input is not a piecewise linear complex, and splitting cannot "
+                         "protect its edges");
+    }
+}
+
+}  // namespace cavity::core

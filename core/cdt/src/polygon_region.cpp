@@ -1,0 +1,244 @@
+#include "polygon_region.h"
+
+#include <algorithm>
+#include <string>
+#include <unordered_set>
+
+#include "cavity/core/base/error.h"
+#include "cavity/core/mesh/star.h"
+
+namespace cavity::core {
+
+namespace {
+
+/// A live tetrahedron with vertices u and v found by a search across the facets of u's star from
+/// `start` (each tetrahedron counted), or kNoTet when uv is not an edge of the complex.
+TetId search_star(
+    const ArrayStorage& storage, TetId start, VertexId u, VertexId v, std::uint64_t& steps) {
+    std::vector<TetId> queue{start};
+    std::unordered_set<TetId> seen{start};
+    for (std::size_t k = 0; k < queue.size(); ++k) {
+        const TetId t = queue[k];
+        ++steps;
+        const TetVertices& w = storage.vertices(t);
+        if (slot_of(w, v) >= 0) {
+            return t;
+        }
+        for (int f = 0; f < 4; ++f) {
+            if (w[static_cast<std::size_t>(f)] == u) {
+                continue;  // the facet opposite u leaves the star
+            }
+            const HalfFacet h = storage.adjacent(t, f);
+            if (h != kNoHalfFacet && seen.insert(tet_of(h)).second) {
+                queue.push_back(tet_of(h));
+            }
+        }
+    }
+    return kNoTet;
+}
+
+/// A live tetrahedron with edge uv, or kNoTet when uv is not an edge of the complex. Walks from
+/// Adjacent2Vertex(u) through the solid tetrahedra of u's star toward v: from tetrahedron t, it
+/// crosses a facet through u that has v strictly beyond it. When no facet does, the ray from u to
+/// v lies in t's closed cone at u, and since uv is an edge of the complex (no edge passes through
+/// a face or another vertex), v is a vertex of t. A walk that would revisit a tetrahedron or enter
+/// a ghost falls back to a search of the whole star. Steps are counted.
+TetId tet_with_edge(const ArrayStorage& storage,
+                    const Geometry& geometry,
+                    VertexId u,
+                    VertexId v,
+                    std::uint64_t& steps) {
+    const TetId start = storage.tet_at_vertex(u);
+    if (start == kNoTet) {
+        return kNoTet;
+    }
+    std::unordered_set<TetId> seen;
+    TetId t = start;
+    if (is_ghost(storage.vertices(t))) {
+        // The solid tetrahedron behind the ghost's hull triangle also has u.
+        const HalfFacet behind = storage.adjacent(t, 3);
+        t = behind == kNoHalfFacet ? t : tet_of(behind);
+    }
+    while (!is_ghost(storage.vertices(t)) && seen.insert(t).second) {
+        ++steps;
+        const TetVertices& w = storage.vertices(t);
+        if (slot_of(w, v) >= 0) {
+            return t;
+        }
+        TetId next = kNoTet;
+        for (int f = 0; f < 4 && next == kNoTet; ++f) {
+            if (w[static_cast<std::size_t>(f)] == u) {
+                continue;
+            }
+            const auto g = facet_vertices(w, f);
+            if (geometry.orient3d(g[0], g[1], g[2], v, nullptr) == predicates::Sign::kNeg) {
+                const HalfFacet h = storage.adjacent(t, f);
+                next = h == kNoHalfFacet ? kNoTet : tet_of(h);
+            }
+        }
+        if (next == kNoTet) {
+            break;
+        }
+        t = next;
+    }
+    return search_star(storage, start, u, v, steps);
+}
+
+}  // namespace
+
+FacetGeometry::FacetGeometry(const Geometry& geometry, const Plc& plc, const PlcFacet& facet)
+    : geometry_(geometry), plc_(plc), facet_(facet), plane_([&] {
+        const auto plane = ExactPlane::of_facet(plc, facet);
+        if (!plane) {
+            throw Error(
+                located_message(plc.source, facet.line, "the facet's corners are all collinear"));
+        }
+        return *plane;
+    }()) {
+    for (const auto& loop : facet.loops) {
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const VertexId a = loop[i];
+            const VertexId b = loop[(i + 1) % loop.size()];
+            const std::array<VertexId, 2> side{std::min(a, b), std::max(a, b)};
+            if (side_set_.insert(side).second) {
+                sides_.push_back(side);
+            }
+            corners_.insert(a);
+        }
+    }
+}
+
+int FacetGeometry::side(VertexId v) {
+    auto it = side_.find(v);
+    if (it == side_.end()) {
+        const Rational d = plane_.offset(geometry_.point(v));
+        it = side_.emplace(v, std::make_pair(d > 0 ? 1 : d < 0 ? -1 : 0, d)).first;
+    }
+    return it->second.first;
+}
+
+Rational FacetGeometry::speed(VertexId v) {
+    return side(v) > 0 ? side_.at(v).second : Rational(0);
+}
+
+bool FacetGeometry::has_left_and_right(std::span<const VertexId> vs) {
+    bool left = false;
+    bool right = false;
+    for (VertexId v : vs) {
+        if (v == kGhostVertex) {
+            continue;
+        }
+        left = left || side(v) < 0;
+        right = right || side(v) > 0;
+    }
+    return left && right;
+}
+
+FacetGeometry::Contact FacetGeometry::contact(const TetVertices& t) {
+    if (is_ghost(t)) {
+        return Contact::kNone;
+    }
+    for (VertexId a : t) {
+        for (VertexId b : t) {
+            if (side(a) < 0 && side(b) > 0) {
+                const ExactPoint x = plane_.crossing(geometry_.point(a), geometry_.point(b));
+                return in_facet_region(plc_, facet_, plane_, x) ? Contact::kCrosses
+                                                                : Contact::kNone;
+            }
+        }
+    }
+    std::array<VertexId, 3> on{};
+    std::size_t count = 0;
+    for (VertexId a : t) {
+        if (side(a) == 0) {
+            on[count++] = a;
+        }
+    }
+    return count > 0 && face_in_region(std::span(on.data(), count)) ? Contact::kTouches
+                                                                    : Contact::kNone;
+}
+
+bool FacetGeometry::holds_triangle(const std::array<VertexId, 3>& g) {
+    return side(g[0]) == 0 && side(g[1]) == 0 && side(g[2]) == 0 && face_in_region(g);
+}
+
+bool FacetGeometry::face_in_region(std::span<const VertexId> on) {
+    if (on.size() == 1 && corners_.contains(on[0])) {
+        return false;
+    }
+    if (on.size() == 2 && side_set_.contains({std::min(on[0], on[1]), std::max(on[0], on[1])})) {
+        return false;
+    }
+    ExactPoint centroid{0, 0, 0};
+    for (VertexId v : on) {
+        const ExactPoint p = exact_point(geometry_.point(v));
+        for (std::size_t k = 0; k < 3; ++k) {
+            centroid[k] += p[k];
+        }
+    }
+    for (auto& c : centroid) {
+        c /= static_cast<int>(on.size());
+    }
+    return in_facet_region(plc_, facet_, plane_, centroid);
+}
+
+PolygonRegion find_polygon_region(const ArrayStorage& storage, FacetGeometry& facet) {
+    using Contact = FacetGeometry::Contact;
+    PolygonRegion region;
+    std::unordered_set<TetId> tested;
+    std::vector<TetId> stack;
+    // Tests t once; a touching or crossing t joins its list and waits on the stack for its
+    // neighbours to be tested.
+    const auto test = [&](TetId t) {
+        if (!tested.insert(t).second) {
+            return;
+        }
+        const Contact c = facet.contact(storage.vertices(t));
+        if (c != Contact::kNone) {
+            (c == Contact::kCrosses ? region.tets : region.touching_outside).push_back(t);
+            stack.push_back(t);
+        }
+    };
+    const Plc& plc = facet.plc();
+    for (const auto& [u, v] : facet.loop_sides()) {
+        // Step 1: the rotary search around the side.
+        const TetId start = tet_with_edge(storage, facet.geometry(), u, v, region.rotary_steps);
+        if (start == kNoTet) {
+            const auto base = static_cast<VertexId>(plc.points.index_base);
+            throw Error(located_message(
+                plc.source,
+                facet.facet().line,
+                "polygon side " + std::to_string(u + base) + "-" + std::to_string(v + base) +
+                    " is not an edge of the triangulation (is the PLC edge-protected?)"));
+        }
+        const TetVertices& w = storage.vertices(start);
+        const EdgeRing ring = edge_ring(storage, start, slot_of(w, u), slot_of(w, v));
+        for (TetId t : ring.tets) {
+            ++region.rotary_steps;
+            test(t);
+        }
+        // Step 2: the depth-first search from what the rotary search found.
+        while (!stack.empty()) {
+            const TetId t = stack.back();
+            stack.pop_back();
+            for (int f = 0; f < 4; ++f) {
+                const HalfFacet h = storage.adjacent(t, f);
+                if (h != kNoHalfFacet && !tested.contains(tet_of(h))) {
+                    ++region.search_visited;
+                    test(tet_of(h));
+                }
+            }
+        }
+    }
+    std::vector<VertexId> vertices;
+    for (TetId t : region.tets) {
+        const TetVertices& w = storage.vertices(t);
+        vertices.insert(vertices.end(), w.begin(), w.end());
+    }
+    std::sort(vertices.begin(), vertices.end());
+    region.vertices = static_cast<std::uint64_t>(std::unique(vertices.begin(), vertices.end()) -
+                                                 vertices.begin());
+    return region;
+}
+
+}  // namespace cavity::core

@@ -1,0 +1,105 @@
+#pragma once
+
+// Steps 1-2 of FlipInsertPolygon (Cheng, Dey & Shewchuk §5.8): where one polygon sits in the live
+// complex. The exact tests that decide whether a tetrahedron crosses the polygon, touches it, or
+// has a face in it, and the rotary and depth-first searches that find the region R without
+// looking at the rest of the complex.
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <set>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "cavity/core/geometry/geometry.h"
+#include "cavity/core/input/plc.h"
+#include "cavity/core/mesh/array_storage.h"
+#include "exact_plane.h"
+
+namespace cavity::core {
+
+/// One facet of a PLC against the vertices of the complex, exactly. Left vertices lie on the
+/// negative side of the facet's plane h, right vertices on the positive side.
+///
+/// Every test below asks in_facet_region about a single point that cannot lie on a loop side: the
+/// loop sides are edges of the complex (edge protection), and simplices of a complex do not cross,
+/// so the relative interior of a simplex lying in h is inside or outside the region as a whole,
+/// unless the simplex is a loop side or corner itself (then it is on the boundary).
+class FacetGeometry {
+public:
+    FacetGeometry(const Geometry& geometry, const Plc& plc, const PlcFacet& facet);
+
+    const Geometry& geometry() const { return geometry_; }
+
+    const Plc& plc() const { return plc_; }
+
+    const PlcFacet& facet() const { return facet_; }
+
+    /// -1 left, +1 right, 0 on h.
+    int side(VertexId v);
+
+    /// n . (v - a) for a right vertex (the speed at which its height rises), 0 otherwise.
+    Rational speed(VertexId v);
+
+    bool has_left_and_right(std::span<const VertexId> vs);
+
+    /// How a tetrahedron meets the polygon.
+    enum class Contact : std::uint8_t {
+        kNone,
+        kTouches,  ///< its closure meets the polygon's relative interior, its interior does not
+        kCrosses,  ///< its interior meets the polygon: a tetrahedron of R
+    };
+
+    /// A solid tetrahedron crosses the polygon when it has a left and a right vertex and its
+    /// section by h (a convex polygon whose interior avoids every edge of the complex, hence the
+    /// polygon's boundary) is inside the region: the crossing point of any left-right edge
+    /// decides. Otherwise it touches the polygon when the face spanned by its vertices on h (a
+    /// vertex, edge or triangle) has its relative interior in the region. Ghost tetrahedra never
+    /// touch.
+    Contact contact(const TetVertices& t);
+
+    bool crosses(const TetVertices& t) { return contact(t) == Contact::kCrosses; }
+
+    /// True when triangle g lies in h and inside the region (its centroid decides).
+    bool holds_triangle(const std::array<VertexId, 3>& g);
+
+    /// The loop sides, each as a sorted pair, in loop order.
+    const std::vector<std::array<VertexId, 2>>& loop_sides() const { return sides_; }
+
+private:
+    /// Whether the simplex spanned by `on` (1 to 3 vertices, all on h) has its relative interior
+    /// in the region.
+    bool face_in_region(std::span<const VertexId> on);
+
+    const Geometry& geometry_;
+    const Plc& plc_;
+    const PlcFacet& facet_;
+    ExactPlane plane_;
+    std::map<VertexId, std::pair<int, Rational>> side_;
+    std::vector<std::array<VertexId, 2>> sides_;
+    std::set<std::array<VertexId, 2>> side_set_;
+    std::set<VertexId> corners_;
+};
+
+/// The region R of one polygon and the work of finding it.
+struct PolygonRegion {
+    std::vector<TetId> tets;              ///< R: the solid tetrahedra crossing the polygon
+    std::vector<TetId> touching_outside;  ///< tetrahedra touching the polygon without crossing it
+    std::uint64_t vertices = 0;           ///< m: distinct vertices of R
+    std::uint64_t rotary_steps = 0;
+    std::uint64_t search_visited = 0;
+};
+
+/// Steps 1-2. For every loop side (an edge of the complex), a walk through the star of one end
+/// toward the other finds a tetrahedron holding the side, and the rotary search around the side
+/// tests its ring for tetrahedra touching the polygon; a depth-first search across facets from each
+/// one found then tests the neighbours of every touching tetrahedron. The touching tetrahedra of
+/// each connected piece of the polygon are facet-connected (around any point of the piece they form
+/// the star of a face), and every piece is bounded by loop sides, so the searches meet every
+/// tetrahedron of R. Every side is searched, not one per loop: loops may share corners, so a piece
+/// need not have a whole loop on its boundary. Doesn't change the complex.
+PolygonRegion find_polygon_region(const ArrayStorage& storage, FacetGeometry& facet);
+
+}  // namespace cavity::core

@@ -1,0 +1,205 @@
+// The points of a segment whose coordinates are doubles, found exactly: where protect_edges can
+// split a PLC edge without moving it.
+//
+// Along segment ab, p(t) = a + t(b - a). Where each coordinate keeps one binade (|p_c| in
+// [2^e, 2^(e+1)], or the subnormal range), p_c is a double exactly when it is a multiple of that
+// binade's spacing 2^q. For one coordinate the parameters where this holds form an arithmetic
+// progression {(2^q k - a_c) / (b_c - a_c) : k integer}; a point with three double coordinates is a
+// common member of the three progressions, which is again a progression (or nothing), found by the
+// extended Euclidean algorithm. Cutting [0, 1] wherever a coordinate changes binade or sign and
+// solving each piece finds every such point, with one exception that keeps the cost bounded: the
+// binades more than kDepth = 60 below a coordinate's largest on the segment (where it passes
+// within 2^-60 of its range from zero) form one piece, solved with the spacing of its top binade,
+// which finds only the points there whose coordinate is a multiple of that spacing (zero included).
+// Everything found is a double point of the segment: the spacing used is never finer than the
+// binade's.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include <boost/multiprecision/gmp.hpp>
+
+#include "cavity/core/cdt/edge_protection.h"
+
+namespace cavity::core {
+
+namespace {
+
+using Integer = boost::multiprecision::mpz_int;
+using Rational = boost::multiprecision::mpq_rational;
+
+/// The rationals offset + k * step, k integer (step > 0).
+struct Progression {
+    Rational offset;
+    Rational step;
+};
+
+Integer floor_div(const Integer& n, const Integer& d) {
+    Integer q = n / d;  // truncates toward zero
+    if ((n % d != 0) && ((n < 0) != (d < 0))) {
+        --q;
+    }
+    return q;
+}
+
+Integer floor_of(const Rational& x) {
+    return floor_div(numerator(x), denominator(x));
+}
+
+Integer ceil_of(const Rational& x) {
+    return -floor_of(-x);
+}
+
+Integer lcm_of(const Integer& a, const Integer& b) {
+    return a / gcd(a, b) * b;
+}
+
+/// The common members of two progressions.
+std::optional<Progression> intersect(const Progression& p, const Progression& q) {
+    const Integer scale = lcm_of(lcm_of(denominator(p.offset), denominator(p.step)),
+                                 lcm_of(denominator(q.offset), denominator(q.step)));
+    const Integer o1 = numerator(Rational(p.offset * scale));
+    const Integer s1 = numerator(Rational(p.step * scale));
+    const Integer o2 = numerator(Rational(q.offset * scale));
+    const Integer s2 = numerator(Rational(q.step * scale));
+    // o1 + i s1 = o2 + j s2  <=>  i s1 - j s2 = o2 - o1, solvable when gcd(s1, s2) divides it.
+    Integer g;
+    Integer x;
+    Integer y;
+    mpz_gcdext(g.backend().data(),
+               x.backend().data(),
+               y.backend().data(),
+               s1.backend().data(),
+               s2.backend().data());
+    const Integer diff = o2 - o1;
+    if (diff % g != 0) {
+        return std::nullopt;
+    }
+    const Integer step = s1 / g * s2;
+    Integer first = o1 + x * (diff / g) * s1;
+    first -= floor_div(first, step) * step;  // the least non-negative member, to keep it small
+    return Progression{Rational(first, scale), Rational(step, scale)};
+}
+
+/// Spacing exponent q of the doubles in the binade of |v| (v != 0): doubles there are the
+/// multiples of 2^q.
+int spacing_exponent(const Rational& v) {
+    // mpq_get_d truncates toward zero, which keeps the binade: powers of two are doubles.
+    const double d = std::abs(v.convert_to<double>());
+    if (d < std::ldexp(1.0, -1022)) {
+        return -1074;
+    }
+    return std::ilogb(d) - 52;
+}
+
+constexpr int kDepth = 60;
+
+/// Parameters in (0, 1) where coordinate a_c + t d_c changes sign or binade.
+void add_breakpoints(double a, double b, std::vector<Rational>& out) {
+    if (a == b) {
+        return;
+    }
+    const Rational ea(a);
+    const Rational d = Rational(b) - ea;
+    const auto add = [&](const Rational& v) {
+        const Rational t = (v - ea) / d;
+        if (t > 0 && t < 1) {
+            out.push_back(t);
+        }
+    };
+    add(Rational(0));
+    for (const double sign : {1.0, -1.0}) {
+        const double lo = std::min(sign * a, sign * b);  // magnitudes on this side of zero
+        const double hi = std::max(sign * a, sign * b);
+        if (hi <= 0) {
+            continue;
+        }
+        // Binades more than kDepth below the largest are merged into one piece (see the top).
+        const int e_top = std::ilogb(hi);
+        const int e_lo = std::max({lo > 0 ? std::ilogb(lo) : -1022, -1022, e_top - kDepth});
+        for (int e = e_lo; e <= e_top; ++e) {
+            add(Rational(sign * std::ldexp(1.0, e)));
+        }
+    }
+}
+
+}  // namespace
+
+std::optional<Point3> protection_point(const Point3& a, const Point3& b) {
+    const std::array<double, 3> pa{a.x, a.y, a.z};
+    const std::array<double, 3> pb{b.x, b.y, b.z};
+    std::vector<Rational> cuts{Rational(0), Rational(1)};
+    for (std::size_t c = 0; c < 3; ++c) {
+        add_breakpoints(pa[c], pb[c], cuts);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    // The pieces, nearest the middle first.
+    const Rational half(1, 2);
+    const auto distance = [&](std::size_t i) -> Rational {
+        if (cuts[i] <= half && half <= cuts[i + 1]) {
+            return 0;
+        }
+        return cuts[i + 1] < half ? half - cuts[i + 1] : cuts[i] - half;
+    };
+    std::vector<std::size_t> pieces(cuts.size() - 1);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        pieces[i] = i;
+    }
+    std::stable_sort(pieces.begin(), pieces.end(), [&](std::size_t i, std::size_t j) {
+        return distance(i) < distance(j);
+    });
+    for (std::size_t i : pieces) {
+        const Rational lo = cuts[i];
+        const Rational hi = cuts[i + 1];
+        const Rational mid = (lo + hi) / 2;
+        std::optional<Progression> t;
+        bool first = true;
+        for (std::size_t c = 0; c < 3 && (first || t); ++c) {
+            if (pa[c] == pb[c]) {
+                continue;
+            }
+            const Rational ea(pa[c]);
+            const Rational d = Rational(pb[c]) - ea;
+            const int q = spacing_exponent(ea + mid * d);
+            const Rational spacing =
+                q >= 0 ? Rational(Integer(1) << q) : Rational(Integer(1), Integer(1) << -q);
+            const Progression own{-ea / d, spacing / abs(d)};
+            t = first ? std::optional<Progression>(own) : intersect(*t, own);
+            first = false;
+        }
+        if (!t) {
+            continue;
+        }
+        // The member nearest 1/2 within [lo, hi], strictly inside (0, 1).
+        Integer k_min = ceil_of((lo - t->offset) / t->step);
+        Integer k_max = floor_of((hi - t->offset) / t->step);
+        if (t->offset + k_min * t->step == 0) {
+            ++k_min;
+        }
+        if (t->offset + k_max * t->step == 1) {
+            --k_max;
+        }
+        if (k_min > k_max) {
+            continue;
+        }
+        const Integer k = std::clamp(floor_of((half - t->offset) / t->step + half), k_min, k_max);
+        const Rational at = t->offset + k * t->step;
+        std::array<double, 3> p{};
+        bool exact = true;
+        for (std::size_t c = 0; c < 3; ++c) {
+            const Rational v = Rational(pa[c]) + at * (Rational(pb[c]) - Rational(pa[c]));
+            p[c] = v.convert_to<double>();
+            exact = exact && Rational(p[c]) == v;
+        }
+        // Always exact by construction; checked because a point off the segment must never be
+        // inserted.
+        if (exact) {
+            return Point3{p[0], p[1], p[2]};
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace cavity::core

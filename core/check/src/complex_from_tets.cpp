@@ -1,0 +1,167 @@
+#include "cavity/core/check/complex_from_tets.h"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+
+#include "cavity/core/base/error.h"
+
+namespace cavity::core {
+
+namespace {
+
+using Triangle = std::array<VertexId, 3>;
+
+Triangle sorted(Triangle t) {
+    std::sort(t.begin(), t.end());
+    return t;
+}
+
+std::string name(VertexId v) {
+    return v == kGhostVertex ? "g" : std::to_string(v);
+}
+
+std::string tet_name(const TetVertices& t) {
+    return "(" + name(t[0]) + " " + name(t[1]) + " " + name(t[2]) + " " + name(t[3]) + ")";
+}
+
+/// Glues every pair of half-facets with the same triangle; returns those left alone.
+std::vector<HalfFacet> glue_pairs(ArrayStorage& storage, TetId begin, TetId end) {
+    std::map<Triangle, HalfFacet> open;
+    for (TetId t = begin; t < end; ++t) {
+        for (int f = 0; f < 4; ++f) {
+            const Triangle key = sorted(facet_vertices(storage.vertices(t), f));
+            const auto [it, inserted] = open.emplace(key, half_facet(t, f));
+            if (inserted) {
+                continue;
+            }
+            if (it->second == kNoHalfFacet) {
+                throw Error("triangle " + name(key[0]) + " " + name(key[1]) + " " + name(key[2]) +
+                            " belongs to more than two tetrahedra");
+            }
+            storage.glue(it->second, half_facet(t, f));
+            it->second = kNoHalfFacet;
+        }
+    }
+    std::vector<HalfFacet> alone;
+    for (const auto& [key, h] : open) {
+        if (h != kNoHalfFacet) {
+            alone.push_back(h);
+        }
+    }
+    return alone;
+}
+
+}  // namespace
+
+ArrayStorage complex_from_tets(std::span<const std::array<std::uint32_t, 4>> tets) {
+    ArrayStorage storage;
+    for (const auto& t : tets) {
+        storage.add_tetrahedron({t[1], t[0], t[2], t[3]});  // positive volume → orient3d > 0
+    }
+    const auto solid_end = static_cast<TetId>(storage.capacity());
+    const std::vector<HalfFacet> boundary = glue_pairs(storage, 0, solid_end);
+    // A ghost over each boundary triangle, facing out: the triangle reversed, ghost in front.
+    for (HalfFacet h : boundary) {
+        const Triangle tri = facet_vertices(storage.vertices(tet_of(h)), facet_of(h));
+        const TetId g = storage.add_tetrahedron({tri[1], tri[0], tri[2], kGhostVertex});
+        storage.glue(half_facet(g, 3), h);
+    }
+    // The ghosts' own facets (a hull edge and the ghost vertex) pair up among the ghosts; solid
+    // facets are all glued already, so glue_pairs sees only facets 0-2 of ghosts as open.
+    std::map<Triangle, HalfFacet> open;
+    for (TetId g = solid_end; g < storage.capacity(); ++g) {
+        for (int f = 0; f < 3; ++f) {
+            const Triangle key = sorted(facet_vertices(storage.vertices(g), f));
+            const auto [it, inserted] = open.emplace(key, half_facet(g, f));
+            if (inserted) {
+                continue;
+            }
+            if (it->second == kNoHalfFacet) {
+                throw Error("hull edge " + name(key[0]) + " " + name(key[1]) +
+                            " belongs to more than two hull triangles");
+            }
+            storage.glue(it->second, half_facet(g, f));
+            it->second = kNoHalfFacet;
+        }
+    }
+    for (const auto& [key, h] : open) {
+        if (h != kNoHalfFacet) {
+            throw Error("the boundary of the tetrahedra is not closed at edge " + name(key[0]) +
+                        " " + name(key[1]));
+        }
+    }
+    return storage;
+}
+
+std::vector<std::array<std::uint32_t, 4>> solid_tets(const ArrayStorage& storage) {
+    std::vector<std::array<std::uint32_t, 4>> out;
+    for (TetId t = 0; t < storage.capacity(); ++t) {
+        if (storage.alive(t) && !is_ghost(storage.vertices(t))) {
+            const TetVertices& v = storage.vertices(t);
+            out.push_back({v[1], v[0], v[2], v[3]});  // orient3d > 0 → positive volume
+        }
+    }
+    return out;
+}
+
+std::vector<std::string> check_complex(const ArrayStorage& storage, const Geometry& geometry) {
+    std::vector<std::string> problems;
+    for (TetId t = 0; t < storage.capacity(); ++t) {
+        if (!storage.alive(t)) {
+            continue;
+        }
+        const TetVertices& v = storage.vertices(t);
+        for (int s = 0; s < 3; ++s) {
+            if (v[static_cast<std::size_t>(s)] == kGhostVertex) {
+                problems.push_back("tetrahedron " + tet_name(v) + ": ghost vertex not in slot 3");
+            }
+        }
+        if (!is_ghost(v) && geometry.orient3d(v[0], v[1], v[2], v[3], nullptr) != Sign::kPos) {
+            // Named as the API lists it (positive right-hand volume), the stored order mirrored.
+            problems.push_back("tetrahedron " + tet_name({v[1], v[0], v[2], v[3]}) +
+                               ": volume not positive (right-hand rule)");
+        }
+        for (int f = 0; f < 4; ++f) {
+            const HalfFacet h = storage.adjacent(t, f);
+            if (h == kNoHalfFacet) {
+                problems.push_back("facet " + std::to_string(f) + " of " + tet_name(v) +
+                                   " is not glued");
+                continue;
+            }
+            if (storage.adjacent(tet_of(h), facet_of(h)) != half_facet(t, f)) {
+                problems.push_back("adjacency across facet " + std::to_string(f) + " of " +
+                                   tet_name(v) + " is not symmetric");
+            }
+            const Triangle mine = facet_vertices(v, f);
+            const TetVertices& w = storage.vertices(tet_of(h));
+            const Triangle theirs = facet_vertices(w, facet_of(h));
+            const bool opposite = (theirs == Triangle{mine[1], mine[0], mine[2]}) ||
+                                  (theirs == Triangle{mine[0], mine[2], mine[1]}) ||
+                                  (theirs == Triangle{mine[2], mine[1], mine[0]});
+            if (!opposite) {
+                problems.push_back("facet " + std::to_string(f) + " of " + tet_name(v) +
+                                   " is glued to a different or equally oriented triangle of " +
+                                   tet_name(w));
+            }
+            // Hull convexity: the apex across each facet of a ghost is not in front of its hull
+            // triangle (facet 3: the solid apex behind; facets 0-2: the neighbouring hull
+            // triangles' third vertices).
+            const VertexId apex = w[static_cast<std::size_t>(facet_of(h))];
+            if (is_ghost(v) && apex != kGhostVertex &&
+                geometry.orient3d(v[0], v[1], v[2], apex, nullptr) == Sign::kPos) {
+                problems.push_back("hull triangle of " + tet_name(v) + " has vertex " + name(apex) +
+                                   " in front: the hull is not convex");
+            }
+        }
+    }
+    return problems;
+}
+
+Geometry geometry_by_index(const PointSet& points) {
+    std::vector<std::uint32_t> keys(points.size());
+    std::iota(keys.begin(), keys.end(), 0u);
+    return Geometry(points.points, std::move(keys), points.weights);
+}
+
+}  // namespace cavity::core

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "cavity/core/geometry/bootstrap.h"
+#include "cavity/core/geometry/counters.h"
+#include "cavity/core/input/point_set.h"
+
+namespace cavity::core {
+
+/// Point location (§5.4 conflict graph, §5.5 walking).
+/// kFullConflictGraph keeps every conflict of every tetrahedron (Clarkson–Shor), the algorithm
+/// Theorem 5.4 analyses; it counts the conflicts as it goes.
+/// kStraightWalk is the book's straight-line walk (straight_walk.h), kWalk the visibility walk.
+enum class LocateKind { kWalk, kConflictGraph, kFullConflictGraph, kStraightWalk };
+/// Storage (§5.1 face hash table, or the compact array layout).
+enum class StorageKind { kArray, kHash };
+
+/// "walk", "conflict-graph", "conflict-graph-all", "straight-walk"; throws Error.
+LocateKind parse_locate_kind(std::string_view name);
+StorageKind parse_storage_kind(std::string_view name);  // "array", "hash"; throws Error
+
+struct TriangulateOptions {
+    LocateKind locate = LocateKind::kWalk;
+    StorageKind storage = StorageKind::kArray;
+    bool count = false;  ///< fill Triangulation::counters (instrumented engine)
+    /// Also count every created tetrahedron's conflicts (Σj, Theorem 5.4) exactly, by
+    /// ConflictCountingObserver (conflict_counter.h); implies `count`. Costs about one exact test
+    /// per conflict: Σj ≈ 81 n ln n in a uniform cube.
+    bool count_conflicts = false;
+    std::uint64_t seed = 0;  ///< the walk's stochastic choices
+    /// How the first tetrahedron is taken from the sequence (bootstrap.h): kFirst keeps the
+    /// sequence as it is for points in general position, as exact identities need.
+    BootstrapRule bootstrap = BootstrapRule::kWidest;
+    /// Insert only the first `prefix` points of the sequence (after the bootstrap four are put
+    /// first and repeats removed); 0 inserts all. The rest stay uninserted but are still counted
+    /// as conflicts, so a prefix run gives the conflicts a full run creates in its first `prefix`
+    /// insertions, exactly, at a small part of its cost: Σj/n varies between seeds mostly through
+    /// the first insertions (their circumballs hold about n/i points), so more seeds of the
+    /// prefix narrow Theorem 5.4's interval where full runs are too costly (experiments' prefix).
+    std::size_t prefix = 0;
+    /// Called now and then with (points processed, total); may be empty.
+    std::function<void(std::size_t, std::size_t)> progress;
+};
+
+/// A (weighted) Delaunay triangulation of a point set under the symbolic perturbation, in the
+/// input's own indices.
+struct Triangulation {
+    /// Solid tetrahedra as input indices (0-based), each with positive volume by the right-hand
+    /// rule as TetGen and VTK list them: the engine's orient3d > 0 order mirrored (handedness.h).
+    std::vector<std::array<std::uint32_t, 4>> tets;
+    /// {point, its first occurrence}: exact repeats, not inserted.
+    std::vector<std::array<std::uint32_t, 2>> duplicates;
+    /// Weighted only: points that are not vertices because their lifted point lies above the lower
+    /// hull (submerged), in increasing order.
+    std::vector<std::uint32_t> redundant;
+    std::size_t hull_triangles = 0;
+    std::size_t storage_bytes = 0;  ///< capacity of the storage at the end
+    Counters counters;              ///< when TriangulateOptions::count
+};
+
+/// Triangulates `points` inserting them in `sequence` (a permutation of all input indices, e.g.
+/// from make_insertion_order). Exact for every finite double input.
+/// Throws Error, before building anything, for a non-finite coordinate or weight (naming the
+/// point), weights not one per point, or a sequence that is not a permutation; and when the points
+/// have no 3D triangulation (fewer than 4 distinct points, or all coplanar or collinear: the
+/// message names the affine dimension). An exception thrown by `options.progress` propagates
+/// unchanged and leaves nothing behind.
+Triangulation triangulate(const PointSet& points,
+                          std::span<const std::uint32_t> sequence,
+                          const TriangulateOptions& options);
+
+}  // namespace cavity::core

@@ -1,0 +1,207 @@
+#pragma once
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "cavity/core/base/error.h"
+#include "cavity/core/delaunay/conflict_graph.h"
+#include "cavity/core/delaunay/full_conflict_graph.h"
+#include "cavity/core/delaunay/seek_conflict.h"
+#include "cavity/core/delaunay/straight_walk.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/delaunay/walk.h"
+#include "cavity/core/mesh/array_storage.h"
+#include "cavity/core/mesh/face_hash_storage.h"
+
+/// triangulate() with an observer of the caller's type: the engine is instantiated for it, so its
+/// hooks (observer.h) are called directly and cost nothing when empty. The experiments layer uses
+/// this to log every tetrahedron's life.
+namespace cavity::core {
+
+namespace detail {
+
+/// The insertion sequence without repeats, the bootstrap four first, and the engine's view of the
+/// points in that order.
+struct Prepared {
+    std::vector<std::uint32_t> sequence;
+    Geometry geometry;
+};
+
+/// Checks the input (finite coordinates and weights, one weight per point, the sequence a
+/// permutation), removes repeats (keeping the lowest index), puts the bootstrap four (by `rule`)
+/// first and lays the points out in insertion order. Throws Error naming the problem, or when there
+/// is no 3D triangulation.
+Prepared prepare(const PointSet& input,
+                 std::span<const std::uint32_t> sequence,
+                 BootstrapRule rule,
+                 Triangulation& out);
+
+/// The full conflict graph's own count of the conflicts goes into the counters; when the
+/// conflict-counting observer has counted them too, the two independent counts must agree to the
+/// unit. \throws Error ("internal error") when they do not.
+void merge_conflict_tally(const ConflictTally& tally, Counters& counters, bool counted);
+
+template <class Storage, class Observer, class Locator>
+void run(const Prepared& prep,
+         const TriangulateOptions& options,
+         Locator& locator,
+         Storage& storage,
+         Observer& observer,
+         Triangulation& out) {
+    const Geometry& geometry = prep.geometry;
+    const std::size_t n = geometry.size();
+    // A prefix run inserts the first `last` points; the others are only counted as conflicts.
+    const std::size_t last =
+        options.prefix == 0 ? n : std::clamp<std::size_t>(options.prefix, 4, n);
+    storage.reserve(7 * last + 64, n);
+    BowyerWatson<Storage, Observer> engine(geometry, storage, observer);
+    observer.on_start(geometry);
+    engine.bootstrap(0, 1, 2, 3);
+    locator.start(engine);
+    std::vector<TetId> scratch;
+    std::vector<VertexId> redundant;
+    const std::size_t report_every = std::max<std::size_t>(n / 200, 1024);
+    for (VertexId u = 4; u < last; ++u) {
+        std::uint64_t steps_before = 0;
+        if constexpr (Observer::kCounting) {
+            steps_before = observer.counters()->walk_steps;
+        }
+        const TetId located = locator.locate(engine, u);
+        const ConflictSeed seed = seek_conflict(engine, u, located, scratch);
+        if (seed.duplicate != kNoVertex) {
+            // first_occurrences removed every repeat; reaching here would be an engine bug.
+            throw Error("internal error: point " + std::to_string(geometry.key(u)) +
+                        " repeats point " + std::to_string(geometry.key(seed.duplicate)) +
+                        " after duplicate removal");
+        }
+        if (seed.tet == kNoTet) {
+            redundant.push_back(u);
+            locator.skip(engine, u);
+        } else {
+            engine.insert_vertex(u, seed.tet, u);
+            locator.after_insertion(engine, u);
+            redundant.insert(redundant.end(), engine.vanished().begin(), engine.vanished().end());
+        }
+        if constexpr (Observer::kCounting) {
+            const bool inserted = seed.tet != kNoTet;
+            observer.on_insertion(InsertionRecord{
+                geometry.key(u),
+                u,
+                inserted ? static_cast<std::uint32_t>(engine.created().size()) : 0u,
+                inserted ? static_cast<std::uint32_t>(engine.deleted().size()) : 0u,
+                static_cast<std::uint32_t>(observer.counters()->walk_steps - steps_before)});
+        }
+        if (options.progress && u % report_every == 0) {
+            options.progress(u, n);
+        }
+    }
+    for (VertexId v : redundant) {
+        out.redundant.push_back(geometry.key(v));
+    }
+    std::sort(out.redundant.begin(), out.redundant.end());
+    observer.on_finish();
+    out.storage_bytes = storage.bytes();
+    out.tets.reserve(storage.live_count());
+    storage.drain([&](const TetVertices& v) {
+        if (is_ghost(v)) {
+            ++out.hull_triangles;
+        } else {
+            // The stored orientation mirrored: the API hands out positive right-hand volume.
+            out.tets.push_back(
+                {geometry.key(v[1]), geometry.key(v[0]), geometry.key(v[2]), geometry.key(v[3])});
+        }
+    });
+    if constexpr (Observer::kCounting) {
+        out.counters = *observer.counters();
+        out.counters.duplicates = out.duplicates.size();
+        out.counters.redundant = out.redundant.size();
+        if constexpr (requires { storage.probes(); }) {
+            out.counters.hash_probes = storage.probes();
+        }
+    }
+    if constexpr (Observer::kCounting && requires { locator.tally(); }) {
+        merge_conflict_tally(locator.tally(), out.counters, Observer::kCountsConflicts);
+    }
+    if (options.progress) {
+        options.progress(n, n);
+    }
+}
+
+/// Point location by a walk from the most recently created solid tetrahedron (§5.5): `Walker` is
+/// the visibility walk (walk.h) or the book's straight-line walk (straight_walk.h).
+template <class Walker>
+class WalkingLocator {
+public:
+    explicit WalkingLocator(std::uint64_t seed) : walk_(seed) {}
+
+    template <class Engine>
+    void start(Engine&) {}
+
+    template <class Engine>
+    TetId locate(Engine& engine, VertexId u) {
+        return walk_.locate(engine, engine.geometry().point(u), engine.last_solid());
+    }
+
+    template <class Engine>
+    void skip(Engine&, VertexId) {}
+
+    template <class Engine>
+    void after_insertion(Engine&, VertexId) {}
+
+private:
+    Walker walk_;
+};
+
+using WalkLocator = WalkingLocator<Walk>;
+using StraightWalkLocator = WalkingLocator<StraightWalk>;
+
+template <class Storage, class Observer>
+void dispatch_locator(const Prepared& prep,
+                      const TriangulateOptions& options,
+                      Observer& observer,
+                      Triangulation& out) {
+    Storage storage;
+    if (options.locate == LocateKind::kWalk) {
+        WalkLocator locator(options.seed);
+        run(prep, options, locator, storage, observer, out);
+    } else if (options.locate == LocateKind::kStraightWalk) {
+        StraightWalkLocator locator(options.seed);
+        run(prep, options, locator, storage, observer, out);
+    } else if (options.locate == LocateKind::kFullConflictGraph) {
+        FullConflictGraph locator(options.seed);
+        run(prep, options, locator, storage, observer, out);
+    } else {
+        ConflictGraph locator;
+        run(prep, options, locator, storage, observer, out);
+    }
+}
+
+template <class Observer>
+void dispatch_storage(const Prepared& prep,
+                      const TriangulateOptions& options,
+                      Observer& observer,
+                      Triangulation& out) {
+    if (options.storage == StorageKind::kArray) {
+        dispatch_locator<ArrayStorage>(prep, options, observer, out);
+    } else {
+        dispatch_locator<FaceHashStorage>(prep, options, observer, out);
+    }
+}
+
+}  // namespace detail
+
+/// As triangulate(), reporting to `observer` (a NullObserver or CountingObserver, or a type
+/// derived from one). Triangulation::counters is filled when Observer::kCounting.
+template <class Observer>
+Triangulation triangulate_observed(const PointSet& points,
+                                   std::span<const std::uint32_t> sequence,
+                                   const TriangulateOptions& options,
+                                   Observer& observer) {
+    Triangulation out;
+    const detail::Prepared prep = detail::prepare(points, sequence, options.bootstrap, out);
+    detail::dispatch_storage(prep, options, observer, out);
+    return out;
+}
+
+}  // namespace cavity::core

@@ -1,0 +1,101 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cavity/core/geometry/counters.h"
+#include "cavity/core/mesh/tetrahedron.h"
+#include "cavity/perturbation/outer_halfspace.h"
+#include "cavity/perturbation/sos.h"
+#include "cavity/predicates/insphere.h"
+#include "cavity/predicates/orient3d.h"
+#include "cavity/predicates/point.h"
+
+namespace cavity::core {
+
+using predicates::Point3;
+using predicates::Sign;
+using predicates::WeightedPoint3;
+
+/// The points the engine triangulates, in insertion order (vertex id = insertion rank, for memory
+/// locality), each with its perturbation key (the input index), and the geometric tests of the
+/// engine on top of the exact and perturbed predicates. When `counters` is non-null every test
+/// records its deciding stage.
+class Geometry {
+public:
+    Geometry(std::vector<Point3> points,
+             std::vector<std::uint32_t> keys,
+             std::vector<double> weights);
+
+    const Point3& point(VertexId v) const { return points_[v]; }
+
+    std::uint32_t key(VertexId v) const { return keys_[v]; }
+
+    bool weighted() const { return !weights_.empty(); }
+
+    std::size_t size() const { return points_.size(); }
+
+    /// Appends an unweighted point whose key is its new index (for geometries by index, like a
+    /// live CDT receiving a vertex). Returns its vertex id.
+    VertexId append_point(const Point3& p) {
+        points_.push_back(p);
+        keys_.push_back(static_cast<std::uint32_t>(keys_.size()));
+        return static_cast<VertexId>(points_.size() - 1);
+    }
+
+    WeightedPoint3 weighted_point(VertexId v) const {
+        const Point3& p = points_[v];
+        return {p.x, p.y, p.z, weights_[v]};
+    }
+
+    Sign orient3d(VertexId a, VertexId b, VertexId c, VertexId d, Counters* counters) const {
+        return orient3d(point(a), point(b), point(c), point(d), counters);
+    }
+
+    static Sign orient3d(
+        const Point3& a, const Point3& b, const Point3& c, const Point3& d, Counters* counters) {
+        if (counters == nullptr) {
+            return predicates::orient3d(a, b, c, d);
+        }
+        const auto verdict = predicates::orient3d_staged(a, b, c, d);
+        counters->count_predicate(PredicateKind::kOrient3d, verdict.stage);
+        return verdict.sign;
+    }
+
+    /// True when u is in the perturbed open circumball (weighted: below the perturbed witness
+    /// plane) of the solid tetrahedron t. The common case (unweighted, uncounted, not a tie) is
+    /// inline; the perturbation keys are read only on an exact tie.
+    [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t,
+                                                VertexId u,
+                                                Counters* counters) const {
+        if (counters == nullptr && !weighted()) {
+            const Sign exact =
+                predicates::insphere(point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
+            // On an exact tie go straight to the tie-break: the exact determinant is already
+            // known to be zero, and evaluating it again costs about 12% of a 50^3 grid's run.
+            return exact != Sign::kZero ? exact == Sign::kPos : tie_breaks_into(t, u);
+        }
+        return conflicts_solid_exactly(t, u, counters);
+    }
+
+    /// True when u is in the perturbed outer halfspace of the hull triangle of ghost tetrahedron
+    /// t. `interior` is any vertex strictly behind every hull facet's plane or on the hull
+    /// (a bootstrap vertex); it is used only when u is coplanar with the hull triangle.
+    bool conflicts_ghost(const TetVertices& t,
+                         VertexId u,
+                         const std::array<VertexId, 4>& interior,
+                         Counters* counters) const;
+
+private:
+    /// The perturbed in-sphere test of u against solid t when the exact one is zero (out of
+    /// line: rare, and kept off the inlined fast path).
+    bool tie_breaks_into(const TetVertices& t, VertexId u) const;
+    bool conflicts_solid_exactly(const TetVertices& t, VertexId u, Counters* counters) const;
+    void count(const perturbation::SosVerdict& v, PredicateKind kind, Counters* counters) const;
+
+    std::vector<Point3> points_;
+    std::vector<std::uint32_t> keys_;
+    std::vector<double> weights_;
+};
+
+}  // namespace cavity::core

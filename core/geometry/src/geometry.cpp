@@ -1,0 +1,87 @@
+#include "cavity/core/geometry/geometry.h"
+
+#include <utility>
+
+namespace cavity::core {
+
+Geometry::Geometry(std::vector<Point3> points,
+                   std::vector<std::uint32_t> keys,
+                   std::vector<double> weights)
+    : points_(std::move(points)), keys_(std::move(keys)), weights_(std::move(weights)) {}
+
+void Geometry::count(const perturbation::SosVerdict& v,
+                     PredicateKind kind,
+                     Counters* counters) const {
+    counters->count_predicate(kind, v.stage);
+    if (v.cofactors > 0) {
+        ++counters->perturbations;
+        counters->perturbation_cofactors += v.cofactors;
+    }
+}
+
+bool Geometry::tie_breaks_into(const TetVertices& t, VertexId u) const {
+    const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
+    return perturbation::detail::sos_tie(
+               point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys) == Sign::kPos;
+}
+
+bool Geometry::conflicts_solid_exactly(const TetVertices& t, VertexId u, Counters* counters) const {
+    const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
+    if (!weighted()) {
+        if (counters == nullptr) {
+            return perturbation::insphere_sos(
+                       point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys) ==
+                   Sign::kPos;
+        }
+        const auto v = perturbation::insphere_sos_staged(
+            point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys);
+        count(v, PredicateKind::kInsphere, counters);
+        return v.sign == Sign::kPos;
+    }
+    const auto a = weighted_point(t[0]), b = weighted_point(t[1]), c = weighted_point(t[2]),
+               d = weighted_point(t[3]), e = weighted_point(u);
+    if (counters == nullptr) {
+        return perturbation::orient4d_sos(a, b, c, d, e, keys) == Sign::kPos;
+    }
+    const auto v = perturbation::orient4d_sos_staged(a, b, c, d, e, keys);
+    count(v, PredicateKind::kOrient4d, counters);
+    return v.sign == Sign::kPos;
+}
+
+bool Geometry::conflicts_ghost(const TetVertices& t,
+                               VertexId u,
+                               const std::array<VertexId, 4>& interior,
+                               Counters* counters) const {
+    // In front of the hull triangle: a conflict whatever the weights (the new point becomes a hull
+    // vertex). Behind it: none. Only a coplanar point needs the in-plane (perturbed) disk test.
+    const Sign front = orient3d(t[0], t[1], t[2], u, counters);
+    if (front != Sign::kZero) {
+        return front == Sign::kPos;
+    }
+    VertexId behind = interior[0];
+    for (VertexId y : interior) {
+        if (orient3d(t[0], t[1], t[2], y, counters) == Sign::kNeg) {
+            behind = y;
+            break;
+        }
+    }
+    const perturbation::Keys4 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[u]};
+    perturbation::SosVerdict v;
+    if (!weighted()) {
+        v = perturbation::outer_halfspace_sos_staged(
+            point(t[0]), point(t[1]), point(t[2]), point(behind), point(u), keys);
+    } else {
+        v = perturbation::outer_halfspace_weighted_sos_staged(weighted_point(t[0]),
+                                                              weighted_point(t[1]),
+                                                              weighted_point(t[2]),
+                                                              weighted_point(behind),
+                                                              weighted_point(u),
+                                                              keys);
+    }
+    if (counters != nullptr) {
+        count(v, PredicateKind::kGhost, counters);
+    }
+    return v.sign == Sign::kPos;
+}
+
+}  // namespace cavity::core

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "cavity/core/input/point_set.h"
+
+/// A piecewise linear complex (Cheng, Dey & Shewchuk §4.5): points, planar polygons with holes and
+/// segments, as a TetGen `.poly` file describes them. Indices are 0-based positions in `points`
+/// (the perturbation keys); `points.index_base` keeps the file's numbering for output.
+namespace cavity::core {
+
+/// One TetGen facet: coplanar loops (polygons of 3 or more corners) whose sides do not cross, and
+/// hole points. Its region follows TetGen's .poly semantics: the union of the loops' interiors,
+/// minus every face of the loops' arrangement that holds a hole point. With non-crossing loops a
+/// face is "inside loop L, outside L's children", so a loop nested in another cuts a hole only when
+/// a hole point lies inside it and outside its own children (without one, the nested loop just
+/// subdivides the region); a hole point outside every loop removes nothing. Two faces enclosed by
+/// the same loops count as one face (a loop whose children split it is carved as a whole). A hole
+/// point on a loop side is refused (read_poly, plc_violations).
+/// Two-corner polygons of the facet are segments and go to Plc::segments.
+struct PlcFacet {
+    std::vector<std::vector<std::uint32_t>> loops;
+    std::vector<Point3> holes;
+    int marker = 0;
+    std::size_t line = 0;    ///< line of the facet header in the .poly file (0: not from a file)
+    std::size_t number = 0;  ///< position in the file's facet list, numbered like the points
+};
+
+/// A region seed of a .poly file (TetGen's region list): the tetrahedra reachable from the one
+/// holding `point` without crossing a polygon carry `marker` (cdt_regions.h).
+struct PlcRegion {
+    Point3 point;
+    std::int32_t marker = 0;
+    std::size_t line = 0;  ///< in the .poly file (0: not from a file)
+};
+
+struct Plc {
+    PointSet points;
+    std::vector<PlcFacet> facets;
+    std::vector<std::array<std::uint32_t, 2>> segments;  ///< explicit segments (2-corner polygons)
+    /// Read but not used: the CDT tetrahedralizes the whole convex hull of the points, and
+    /// carving volumes out of it is left to the caller.
+    std::vector<Point3> volume_holes;
+    std::vector<PlcRegion> regions;
+    std::string source;
+};
+
+/// "facet N (line L)" with N as the file numbers its facets; for a PLC not read from a file (line
+/// 0), N is the position in `facets` plus points.index_base.
+std::string facet_name(const Plc& plc, std::size_t f);
+
+/// Every PLC edge (the explicit segments and the sides of every loop), each once as {min, max}.
+std::vector<std::array<std::uint32_t, 2>> plc_edges(const Plc& plc);
+
+}  // namespace cavity::core

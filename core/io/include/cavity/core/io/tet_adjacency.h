@@ -1,0 +1,39 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "cavity/core/io/mesh_io.h"
+
+/// The combinatorial views of a triangulation that leave the program (TetGen's .neigh and .face,
+/// scipy.spatial.Delaunay's attributes), derived from the bare list of tetrahedra that
+/// triangulate() returns.
+namespace cavity::core {
+
+struct Adjacency {
+    /// The tetrahedra (input ids, positive volume by the right-hand rule, each as given),
+    /// renumbered along the rank order: sorted by
+    /// their lowest-ranked vertex, so that tetrahedra near in space are near in the array.
+    std::vector<Tet> simplices;
+    /// neighbors[4t + i]: the tetrahedron across the facet opposite vertex i of simplices[t], or
+    /// -1 on the convex hull (scipy's convention).
+    std::vector<std::int32_t> neighbors;
+    /// Hull triangles, each counter-clockwise seen from outside the hull.
+    std::vector<std::array<std::int32_t, 3>> hull;
+    /// For each input point, one tetrahedron having it as a vertex, or -1 (repeats, redundant).
+    std::vector<std::int32_t> vertex_to_simplex;
+};
+
+/// Renumbers `tets` (positive right-hand volume, vertex ids < rank.size()) and matches their facets
+/// in O(m) expected time: facets are bucketed by their lowest-ranked vertex (counting sort) and
+/// paired inside each bucket (hashing), where the two other vertices identify them. `rank` is a
+/// permutation of the point ids along a space-filling curve (the insertion order). Sorting the
+/// tetrahedra by rank first makes every later pass nearly sequential: input ids of random points
+/// are random in space, and the engine's storage slots are recycled, so neither order is local.
+/// Memory: 12 bytes per half-facet and the renumbered copy besides the output. \throws Error if a
+/// triangle has more than two tetrahedra (not a manifold).
+Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32_t> rank);
+
+}  // namespace cavity::core

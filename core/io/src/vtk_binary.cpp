@@ -1,0 +1,100 @@
+#include "vtk_binary.h"
+
+#include <bit>
+#include <cstdint>
+#include <new>
+
+#include <zlib.h>
+
+#include "cavity/core/base/error.h"
+
+namespace cavity::core {
+
+static_assert(std::endian::native == std::endian::little,
+              "the .vtu writer declares byte_order=\"LittleEndian\" and writes native bytes");
+
+namespace {
+
+// VTK's default block size: each block is compressed alone, so readers can inflate in parallel.
+constexpr std::size_t kBlockSize = 1u << 15;
+
+void append_uint64(std::string& out, std::uint64_t value) {
+    out.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+}  // namespace
+
+void VtkBinaryArray::bytes(std::string_view raw) {
+    while (!raw.empty()) {
+        const std::size_t take = std::min(raw.size(), kBlockSize - block_.size());
+        block_.append(raw.substr(0, take));
+        raw.remove_prefix(take);
+        if (block_.size() == kBlockSize) {
+            compress_block();
+        }
+    }
+}
+
+void VtkBinaryArray::compress_block() {
+    uLongf size = compressBound(static_cast<uLong>(block_.size()));
+    const std::size_t at = compressed_.size();
+    compressed_.resize(at + size);
+    const int status = compress2(reinterpret_cast<Bytef*>(compressed_.data() + at),
+                                 &size,
+                                 reinterpret_cast<const Bytef*>(block_.data()),
+                                 static_cast<uLong>(block_.size()),
+                                 Z_DEFAULT_COMPRESSION);
+    if (status == Z_MEM_ERROR) {
+        throw std::bad_alloc();
+    }
+    if (status != Z_OK) {
+        throw InternalError("zlib compress2 failed with status " + std::to_string(status));
+    }
+    compressed_.resize(at + size);
+    append_uint64(sizes_, size);
+    ++block_count_;
+    last_block_ = block_.size();
+    block_.clear();
+}
+
+std::string VtkBinaryArray::encode() {
+    if (!block_.empty() || block_count_ == 0) {
+        compress_block();  // the partial last block (an empty array is one empty block)
+    }
+    std::string header;
+    append_uint64(header, block_count_);
+    append_uint64(header, kBlockSize);
+    append_uint64(header, last_block_);
+    header += sizes_;
+    return base64(header) + base64(compressed_);
+}
+
+std::string base64(std::string_view raw) {
+    static constexpr char kDigits[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((raw.size() + 2) / 3 * 4);
+    std::size_t i = 0;
+    for (; i + 3 <= raw.size(); i += 3) {
+        const std::uint32_t v = (std::uint32_t{static_cast<unsigned char>(raw[i])} << 16) |
+                                (std::uint32_t{static_cast<unsigned char>(raw[i + 1])} << 8) |
+                                std::uint32_t{static_cast<unsigned char>(raw[i + 2])};
+        out += kDigits[(v >> 18) & 63];
+        out += kDigits[(v >> 12) & 63];
+        out += kDigits[(v >> 6) & 63];
+        out += kDigits[v & 63];
+    }
+    if (i < raw.size()) {
+        const bool two = i + 1 < raw.size();
+        const std::uint32_t v =
+            (std::uint32_t{static_cast<unsigned char>(raw[i])} << 16) |
+            (two ? std::uint32_t{static_cast<unsigned char>(raw[i + 1])} << 8 : 0u);
+        out += kDigits[(v >> 18) & 63];
+        out += kDigits[(v >> 12) & 63];
+        out += two ? kDigits[(v >> 6) & 63] : '=';
+        out += '=';
+    }
+    return out;
+}
+
+}  // namespace cavity::core

@@ -1,0 +1,141 @@
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "cavity/core/base/page_releaser.h"
+#include "cavity/core/base/pod_stack.h"
+#include "cavity/core/mesh/tetrahedron.h"
+
+namespace cavity::core {
+
+/// The part both storages share: one record per tetrahedron slot (its four vertex ids first, plus
+/// whatever the storage keeps beside them, in the same cache line), liveness, a free list, and the
+/// per-vertex "most recently added tetrahedron" that answers Adjacent2Vertex (Cheng, Dey &
+/// Shewchuk §5.1).
+///
+/// A deleted tetrahedron keeps its record readable until end_operation(): the cavity search reads
+/// the far side of facets of tetrahedra it has already deleted, and a slot must not be handed to a
+/// new tetrahedron of the same cavity before that.
+template <class Record>
+class TetPool {
+public:
+    void reserve(std::size_t tets, std::size_t vertices) {
+        records_.reserve(tets);
+        alive_.reserve(tets / 64 + 1);
+        if (vertex_tet_.size() < vertices) {
+            vertex_tet_.resize(vertices, kNoTet);
+        }
+    }
+
+    const TetVertices& vertices(TetId t) const { return records_[t].v; }
+
+    bool alive(TetId t) const { return ((alive_[t >> 6] >> (t & 63u)) & 1u) != 0; }
+
+    /// Number of slots ever allocated (live, deleted and free).
+    std::size_t capacity() const { return records_.size(); }
+
+    std::size_t live_count() const { return live_; }
+
+    /// Adjacent2Vertex: a live tetrahedron with vertex v, or kNoTet. Constant time unless the most
+    /// recently added tetrahedron at v has since been deleted (then a scan, as the book warns).
+    TetId tet_at_vertex(VertexId v) const {
+        const auto holds_v = [&](TetId t) {
+            const TetVertices& w = records_[t].v;
+            return alive(t) && std::find(w.begin(), w.end(), v) != w.end();
+        };
+        if (v < vertex_tet_.size() && vertex_tet_[v] != kNoTet && holds_v(vertex_tet_[v])) {
+            return vertex_tet_[v];
+        }
+        for (TetId t = 0; t < records_.size(); ++t) {
+            if (holds_v(t)) {
+                return t;
+            }
+        }
+        return kNoTet;
+    }
+
+    /// Hands every live tetrahedron's vertices to `emit`, in slot order, then empties the pool.
+    /// The records already visited are returned to the operating system as the visit advances
+    /// (whole pages, with madvise on Linux), so that copying the tetrahedra out does not add a
+    /// second copy on top of the storage at the peak. Nothing may read the pool afterwards.
+    template <class Emit>
+    void drain(Emit&& emit) {
+        const std::size_t n = records_.size();
+        PageReleaser releaser(reinterpret_cast<unsigned char*>(records_.data()));
+        for (std::size_t t = 0; t < n; ++t) {
+            if (alive(static_cast<TetId>(t))) {
+                emit(records_[t].v);
+            }
+            if ((t & 0xFFFFu) == 0xFFFFu) {
+                releaser.release_before(reinterpret_cast<unsigned char*>(records_.data() + t + 1));
+            }
+        }
+        std::vector<Record>().swap(records_);
+        std::vector<std::uint64_t>().swap(alive_);
+        free_ = PodStack<TetId>();
+        std::vector<TetId>().swap(vertex_tet_);
+        live_ = 0;
+    }
+
+    std::size_t bytes() const {
+        return records_.capacity() * sizeof(Record) + alive_.capacity() * sizeof(std::uint64_t) +
+               (free_.capacity() + released_.capacity() + vertex_tet_.capacity()) * sizeof(TetId);
+    }
+
+protected:
+    Record& record(TetId t) { return records_[t]; }
+
+    const Record& record(TetId t) const { return records_[t]; }
+
+    [[gnu::always_inline]] TetId allocate(const TetVertices& v) {
+        TetId t;
+        if (!free_.empty()) {
+            t = free_.pop_back();
+            records_[t].v = v;
+        } else {
+            t = static_cast<TetId>(records_.size());
+            records_.push_back(Record{v});
+            if ((t >> 6) >= alive_.size()) {
+                alive_.push_back(0);
+            }
+        }
+        alive_[t >> 6] |= std::uint64_t{1} << (t & 63u);
+        ++live_;
+        for (VertexId u : v) {
+            if (u < vertex_tet_.size())
+                [[likely]] {  // reserve() sized it; the ghost is never below
+                vertex_tet_[u] = t;
+            } else if (u != kGhostVertex) {
+                vertex_tet_.resize(std::max<std::size_t>(u + 1, 2 * vertex_tet_.size()), kNoTet);
+                vertex_tet_[u] = t;
+            }
+        }
+        return t;
+    }
+
+    void release(TetId t) {
+        alive_[t >> 6] &= ~(std::uint64_t{1} << (t & 63u));
+        released_.push_back(t);
+        --live_;
+    }
+
+    void recycle_released() {
+        for (TetId t : released_) {
+            free_.push_back(t);
+        }
+        released_.clear();
+    }
+
+private:
+    std::vector<Record> records_;
+    std::vector<std::uint64_t> alive_;  // one bit per slot: small enough to stay in cache
+    PodStack<TetId> free_;
+    PodStack<TetId> released_;  // deleted during the current operation
+    std::vector<TetId> vertex_tet_;
+    std::size_t live_ = 0;
+};
+
+}  // namespace cavity::core

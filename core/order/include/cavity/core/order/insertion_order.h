@@ -1,0 +1,50 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "cavity/core/input/point_set.h"
+
+namespace cavity::core {
+
+enum class OrderKind { kInput, kRandom, kBrio, kHilbert, kZOrder };
+
+/// "input", "random", "brio", "hilbert" or "zorder". \throws Error for any other name.
+OrderKind parse_order_kind(std::string_view name);
+
+struct OrderOptions {
+    OrderKind kind = OrderKind::kBrio;
+    std::uint64_t seed = 0;
+    /// BRIO: the fraction of points carried into the earlier rounds, the convention of Amenta, Choi
+    /// and Rote (1/2), CGAL's spatial_sort and geogram (1/8): each point still unassigned goes to
+    /// an earlier round with this probability, else stays in the latest remaining one.
+    double brio_ratio = 0.5;
+    /// BRIO: sort the even-numbered rounds backwards along the curve, so each round starts near
+    /// where the previous one ended (Cheng, Dey, Shewchuk, "Delaunay Mesh Generation", §5.5).
+    bool reverse_alternate_rounds = true;
+};
+
+struct InsertionOrder {
+    std::vector<std::uint32_t> sequence;     ///< input indices, in insertion order
+    std::vector<std::uint32_t> round_begin;  ///< BRIO: start of each round in sequence, else empty
+};
+
+/// The order in which to insert `points`:
+/// - kInput: 0, 1, ..., n-1.
+/// - kRandom: a uniform permutation (Fisher–Yates driven by Random(seed)).
+/// - kBrio: a biased randomized insertion order (Amenta, Choi, Rote 2003; the book's §5.3). With
+///   ρ = brio_ratio, rounds are numbered 0..R, R the least integer with n ρ^R <= 1; each point
+///   goes to round R with probability 1 - ρ, else to round R-1 with probability 1 - ρ, and so on;
+///   round 0 keeps the rest. ρ = 0 is a single curve-sorted round. Rounds are inserted first to
+///   last, each sorted along the Hilbert curve (hilbert_sort), even-numbered rounds reversed when
+///   reverse_alternate_rounds is set. round_begin has R+1 entries; round r is [round_begin[r],
+///   round_begin[r+1]) (to the end for the last), and may be empty.
+/// - kHilbert: hilbert_sort of the whole set; kZOrder: morton_sort of the whole set.
+/// The result depends only on the points and the options, never on the platform.
+/// \throws Error for more than 2^32-1 points, a non-finite coordinate (curve orders), or a
+/// brio_ratio outside [0, 1).
+InsertionOrder make_insertion_order(std::span<const Point3> points, const OrderOptions& options);
+
+}  // namespace cavity::core
