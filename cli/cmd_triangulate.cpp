@@ -391,25 +391,21 @@ void add_triangulate_command(CLI::App& app) {
                     "output prefix: PREFIX.node and PREFIX.ele, or PREFIX.vtu (a prefix ending in "
                     "the format's extension is taken without it)")
         ->required();
-    cmd->add_option("--order", args->order, "insertion order")
-        ->check(CLI::IsMember({"input", "random", "brio", "hilbert", "zorder"}))
+    cmd->add_option("--order", args->order, "insertion order: " + core::help_of(core::kOrderKinds))
+        ->check(CLI::IsMember(core::names_of(core::kOrderKinds)))
         ->capture_default_str();
-    cmd->add_option("--locate",
-                    args->locate,
-                    "point location: the visibility walk (§5.5), the book's conflict graph (one "
-                    "cell per point, §5.4), the full conflict graph keeping every conflict "
-                    "(Clarkson-Shor; counts Theorem 5.4's conflicts), or the book's straight-line "
-                    "walk (§5.5)")
-        ->check(CLI::IsMember({"walk", "conflict-graph", "conflict-graph-all", "straight-walk"}))
+    cmd->add_option(
+           "--locate", args->locate, "point location: " + core::help_of(core::kLocateKinds))
+        ->check(CLI::IsMember(core::names_of(core::kLocateKinds)))
         ->capture_default_str();
-    cmd->add_option("--storage", args->storage, "tetrahedron storage")
-        ->check(CLI::IsMember({"array", "hash"}))
+    cmd->add_option(
+           "--storage", args->storage, "tetrahedron storage: " + core::help_of(core::kStorageKinds))
+        ->check(CLI::IsMember(core::names_of(core::kStorageKinds)))
         ->capture_default_str();
     cmd->add_option("--bootstrap",
                     args->bootstrap,
-                    "first tetrahedron: the widest of the next 64 candidates, or the first four "
-                    "affinely independent points of the order (keeps a uniform order uniform)")
-        ->check(CLI::IsMember({"widest", "first"}))
+                    "first tetrahedron: " + core::help_of(core::kBootstrapRules))
+        ->check(CLI::IsMember(core::names_of(core::kBootstrapRules)))
         ->capture_default_str();
     cmd->add_option("--seed", args->seed, "seed of the random choices (order, walk)")
         ->transform(integer_in("--seed", 0, UINT64_MAX))

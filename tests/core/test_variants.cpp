@@ -2,7 +2,9 @@
 // is valid (checked exactly by core::validate) and identical across variants, because the
 // symbolic perturbation makes the triangulation unique.
 
+#include <set>
 #include <string>
+#include <string_view>
 
 #include <gtest/gtest.h>
 
@@ -10,6 +12,7 @@
 #include "cavity/core/check/validate.h"
 #include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/geometry/bootstrap.h"
 #include "cavity/core/order/insertion_order.h"
 #include "corpus.h"
 
@@ -25,16 +28,10 @@ class Variants : public ::testing::TestWithParam<CorpusCase> {};
 TEST_P(Variants, ValidAndIdenticalForEveryOrderLocatorAndStorage) {
     const CorpusCase& c = GetParam();
     std::vector<std::array<std::uint32_t, 4>> reference;
-    for (OrderKind order : {OrderKind::kInput,
-                            OrderKind::kRandom,
-                            OrderKind::kBrio,
-                            OrderKind::kHilbert,
-                            OrderKind::kZOrder}) {
-        for (LocateKind locate : {LocateKind::kWalk,
-                                  LocateKind::kConflictGraph,
-                                  LocateKind::kFullConflictGraph,
-                                  LocateKind::kStraightWalk}) {
-            for (StorageKind storage : {StorageKind::kArray, StorageKind::kHash}) {
+    // Every row of the name tables: a new variant is tested as soon as it has a name.
+    for (const auto& [order_name, order, order_help] : core::kOrderKinds) {
+        for (const auto& [locate_name, locate, locate_help] : core::kLocateKinds) {
+            for (const auto& [storage_name, storage, storage_help] : core::kStorageKinds) {
                 core::OrderOptions order_options;
                 order_options.kind = order;
                 order_options.seed = 11;
@@ -45,9 +42,9 @@ TEST_P(Variants, ValidAndIdenticalForEveryOrderLocatorAndStorage) {
                 options.storage = storage;
                 options.count = true;
                 const auto tri = core::triangulate(c.points, sequence, options);
-                const std::string variant = c.name + " order " + std::to_string(int(order)) +
-                                            " locate " + std::to_string(int(locate)) + " storage " +
-                                            std::to_string(int(storage));
+                const std::string variant = c.name + " order " + std::string(order_name) +
+                                            " locate " + std::string(locate_name) + " storage " +
+                                            std::string(storage_name);
                 const auto report = core::validate(c.points, tri.tets);
                 ASSERT_TRUE(report.ok())
                     << variant << ": " << (report.problems.empty() ? "" : report.problems[0]);
@@ -86,6 +83,38 @@ TEST(Variants, UniformPointsMatchAcrossStoragesAndLocators) {
     options.storage = StorageKind::kHash;
     EXPECT_EQ(canonical(core::triangulate(points, sequence, options).tets), reference);
     EXPECT_TRUE(core::validate(points, core::triangulate(points, sequence, options).tets).ok());
+}
+
+// The name tables are what users type: each name parses to its own row, the names are distinct,
+// and any other name is refused with the list of the valid ones.
+template <class Table>
+void expect_consistent(const Table& table, std::string_view what, auto parse) {
+    std::set<std::string_view> names;
+    for (const auto& row : table) {
+        EXPECT_TRUE(names.insert(row.name).second) << what << ": " << row.name << " twice";
+        EXPECT_EQ(parse(row.name), row.kind) << row.name;
+        EXPECT_EQ(core::name_of(table, row.kind), row.name);
+        EXPECT_FALSE(row.help.empty()) << row.name;
+    }
+    try {
+        parse("no-such-variant");
+        ADD_FAILURE() << what << ": an unknown name was accepted";
+    } catch (const core::Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("unknown " + std::string(what) + " 'no-such-variant'"),
+                  std::string::npos)
+            << message;
+        EXPECT_NE(message.find(std::string(table.back().name)), std::string::npos) << message;
+    }
+}
+
+TEST(NameTables, EachNameParsesToItsRowAndOthersAreRefused) {
+    expect_consistent(core::kOrderKinds, "insertion order", core::parse_order_kind);
+    expect_consistent(core::kLocateKinds, "point location", core::parse_locate_kind);
+    expect_consistent(core::kStorageKinds, "storage", core::parse_storage_kind);
+    expect_consistent(core::kBootstrapRules, "bootstrap rule", core::parse_bootstrap_rule);
+    EXPECT_EQ(core::kOrderKinds.size(), std::size_t{5});  // OrderKind's values, one row each
+    EXPECT_EQ(core::kLocateKinds.size(), std::size_t{4});
 }
 
 }  // namespace

@@ -13,30 +13,11 @@
 namespace cavity::core {
 
 LocateKind parse_locate_kind(std::string_view name) {
-    if (name == "walk") {
-        return LocateKind::kWalk;
-    }
-    if (name == "conflict-graph") {
-        return LocateKind::kConflictGraph;
-    }
-    if (name == "conflict-graph-all") {
-        return LocateKind::kFullConflictGraph;
-    }
-    if (name == "straight-walk") {
-        return LocateKind::kStraightWalk;
-    }
-    throw Error("unknown point location '" + std::string(name) +
-                "' (walk, conflict-graph, conflict-graph-all, straight-walk)");
+    return parse_kind(kLocateKinds, name, "point location");
 }
 
 StorageKind parse_storage_kind(std::string_view name) {
-    if (name == "array") {
-        return StorageKind::kArray;
-    }
-    if (name == "hash") {
-        return StorageKind::kHash;
-    }
-    throw Error("unknown storage '" + std::string(name) + "' (array, hash)");
+    return parse_kind(kStorageKinds, name, "storage");
 }
 
 namespace detail {

@@ -88,13 +88,7 @@ constexpr std::size_t kShapeCandidates = 64;
 }  // namespace
 
 BootstrapRule parse_bootstrap_rule(std::string_view name) {
-    if (name == "widest") {
-        return BootstrapRule::kWidest;
-    }
-    if (name == "first") {
-        return BootstrapRule::kFirst;
-    }
-    throw Error("unknown bootstrap rule '" + std::string(name) + "' (widest, first)");
+    return parse_kind(kBootstrapRules, name, "bootstrap rule");
 }
 
 std::array<std::size_t, 4> find_bootstrap(std::span<const Point3> points,

@@ -94,18 +94,7 @@ InsertionOrder brio_order(std::span<const Point3> points, const OrderOptions& op
 }  // namespace
 
 OrderKind parse_order_kind(std::string_view name) {
-    if (name == "input")
-        return OrderKind::kInput;
-    if (name == "random")
-        return OrderKind::kRandom;
-    if (name == "brio")
-        return OrderKind::kBrio;
-    if (name == "hilbert")
-        return OrderKind::kHilbert;
-    if (name == "zorder")
-        return OrderKind::kZOrder;
-    throw Error("unknown insertion order '" + std::string(name) +
-                "' (expected input, random, brio, hilbert or zorder)");
+    return parse_kind(kOrderKinds, name, "insertion order");
 }
 
 InsertionOrder make_insertion_order(std::span<const Point3> points, const OrderOptions& options) {

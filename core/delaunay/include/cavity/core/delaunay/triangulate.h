@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cavity/core/base/names.h"
 #include "cavity/core/geometry/bootstrap.h"
 #include "cavity/core/geometry/counters.h"
 #include "cavity/core/input/point_set.h"
@@ -21,9 +22,26 @@ enum class LocateKind { kWalk, kConflictGraph, kFullConflictGraph, kStraightWalk
 /// Storage (§5.1 face hash table, or the compact array layout).
 enum class StorageKind { kArray, kHash };
 
-/// "walk", "conflict-graph", "conflict-graph-all", "straight-walk"; throws Error.
+/// The locators' and storages' names (`--locate`, `--storage`, Python, suite files), one row per
+/// value: tests run every row.
+inline constexpr std::array<NamedKind<LocateKind>, 4> kLocateKinds{{
+    {"walk", LocateKind::kWalk, "the visibility walk (§5.5)"},
+    {"conflict-graph",
+     LocateKind::kConflictGraph,
+     "the book's conflict graph, one cell per point (§5.4)"},
+    {"conflict-graph-all",
+     LocateKind::kFullConflictGraph,
+     "every conflict kept (Clarkson-Shor; counts Theorem 5.4's conflicts)"},
+    {"straight-walk", LocateKind::kStraightWalk, "the book's straight-line walk (§5.5)"},
+}};
+inline constexpr std::array<NamedKind<StorageKind>, 2> kStorageKinds{{
+    {"array", StorageKind::kArray, "four neighbours per tetrahedron in flat arrays"},
+    {"hash", StorageKind::kHash, "the book's face hash table (Figure 5.1)"},
+}};
+
+/// A name of kLocateKinds or kStorageKinds. \throws Error for any other name.
 LocateKind parse_locate_kind(std::string_view name);
-StorageKind parse_storage_kind(std::string_view name);  // "array", "hash"; throws Error
+StorageKind parse_storage_kind(std::string_view name);
 
 struct TriangulateOptions {
     LocateKind locate = LocateKind::kWalk;

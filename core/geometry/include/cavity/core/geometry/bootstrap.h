@@ -6,6 +6,7 @@
 #include <span>
 #include <string_view>
 
+#include "cavity/core/base/names.h"
 #include "cavity/predicates/point.h"
 
 namespace cavity::core {
@@ -25,7 +26,16 @@ enum class BootstrapRule {
     kFirst,
 };
 
-BootstrapRule parse_bootstrap_rule(std::string_view name);  // "widest", "first"; throws Error
+/// The rules' names (`--bootstrap`, suite files), one row per BootstrapRule.
+inline constexpr std::array<NamedKind<BootstrapRule>, 2> kBootstrapRules{{
+    {"widest", BootstrapRule::kWidest, "the widest of the next 64 candidates"},
+    {"first",
+     BootstrapRule::kFirst,
+     "the first four affinely independent points of the order (keeps a uniform order uniform)"},
+}};
+
+/// A name of kBootstrapRules. \throws Error for any other name.
+BootstrapRule parse_bootstrap_rule(std::string_view name);
 
 /// Finds four affinely independent points of an insertion sequence, exactly, by `rule`.
 /// Returns their positions in `sequence`. Throws Error naming the affine dimension (0, 1 or 2) of

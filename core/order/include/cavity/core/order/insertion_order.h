@@ -1,17 +1,28 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string_view>
 #include <vector>
 
+#include "cavity/core/base/names.h"
 #include "cavity/core/input/point_set.h"
 
 namespace cavity::core {
 
 enum class OrderKind { kInput, kRandom, kBrio, kHilbert, kZOrder };
 
-/// "input", "random", "brio", "hilbert" or "zorder". \throws Error for any other name.
+/// The orders' names (`--order`, Python's `order=`, suite files), one row per OrderKind.
+inline constexpr std::array<NamedKind<OrderKind>, 5> kOrderKinds{{
+    {"input", OrderKind::kInput, "the points' own order"},
+    {"random", OrderKind::kRandom, "a uniform random permutation"},
+    {"brio", OrderKind::kBrio, "a biased randomized insertion order, rounds along a Hilbert curve"},
+    {"hilbert", OrderKind::kHilbert, "the whole set along a Hilbert curve"},
+    {"zorder", OrderKind::kZOrder, "the whole set along a Z-order (Morton) curve"},
+}};
+
+/// A name of kOrderKinds. \throws Error for any other name.
 OrderKind parse_order_kind(std::string_view name);
 
 struct OrderOptions {
