@@ -10,6 +10,7 @@
 #include "cavity/core/delaunay/observer.h"
 #include "cavity/core/geometry/geometry.h"
 #include "cavity/core/mesh/facet_gluer.h"
+#include "cavity/core/mesh/tet_storage.h"
 #include "cavity/core/mesh/tetrahedron.h"
 
 namespace cavity::core {
@@ -26,6 +27,10 @@ struct CavityFace {
 /// weighted Delaunay, as the Geometry says; every conflict test is exact and perturbed.
 template <class Storage, class Observer = NullObserver>
 class BowyerWatson {
+    static_assert(TetStorage<Storage>, "the storage must model TetStorage (mesh/tet_storage.h)");
+    static_assert(EngineObserver<Observer>,
+                  "the observer must model EngineObserver (delaunay/observer.h)");
+
 public:
     BowyerWatson(const Geometry& geometry, Storage& storage, Observer& observer)
         : geometry_(geometry), storage_(storage), observer_(observer) {

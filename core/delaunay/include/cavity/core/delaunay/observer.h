@@ -1,5 +1,8 @@
 #pragma once
 
+#include <concepts>
+#include <cstdint>
+
 #include "cavity/core/geometry/counters.h"
 #include "cavity/core/geometry/geometry.h"
 #include "cavity/core/mesh/tetrahedron.h"
@@ -32,6 +35,24 @@ struct NullObserver {
     /// Called once after the last insertion, before the counters are read: an observer that
     /// defers work (the conflict counter counts in batches) completes it here.
     void on_finish() {}
+};
+
+/// What the engine asks of an observer: NullObserver's members, with the same meaning.
+template <class O>
+concept EngineObserver = requires(O observer,
+                                  const Geometry& geometry,
+                                  TetId t,
+                                  const TetVertices& vertices,
+                                  std::uint64_t step,
+                                  const InsertionRecord& record) {
+    { O::kCounting } -> std::convertible_to<bool>;
+    { O::kCountsConflicts } -> std::convertible_to<bool>;
+    { observer.counters() } -> std::same_as<Counters*>;
+    observer.on_start(geometry);
+    observer.on_tet_created(t, vertices, step);
+    observer.on_tet_deleted(t, step);
+    observer.on_insertion(record);
+    observer.on_finish();
 };
 
 /// Counts everything in Counters.

@@ -7,6 +7,7 @@
 #include "cavity/core/base/error.h"
 #include "cavity/core/delaunay/conflict_graph.h"
 #include "cavity/core/delaunay/full_conflict_graph.h"
+#include "cavity/core/delaunay/locator.h"
 #include "cavity/core/delaunay/seek_conflict.h"
 #include "cavity/core/delaunay/straight_walk.h"
 #include "cavity/core/delaunay/triangulate.h"
@@ -42,13 +43,15 @@ Prepared prepare(const PointSet& input,
 /// unit. \throws Error ("internal error") when they do not.
 void merge_conflict_tally(const ConflictTally& tally, Counters& counters, bool counted);
 
-template <class Storage, class Observer, class Locator>
+template <class Storage, class Observer, class PointLocator>
 void run(const Prepared& prep,
          const TriangulateOptions& options,
-         Locator& locator,
+         PointLocator& locator,
          Storage& storage,
          Observer& observer,
          Triangulation& out) {
+    static_assert(Locator<PointLocator, BowyerWatson<Storage, Observer>>,
+                  "the locator must model Locator (delaunay/locator.h)");
     const Geometry& geometry = prep.geometry;
     const std::size_t n = geometry.size();
     // A prefix run inserts the first `last` points; the others are only counted as conflicts.

@@ -3,6 +3,7 @@
 #include <array>
 
 #include "cavity/core/mesh/tet_pool.h"
+#include "cavity/core/mesh/tet_storage.h"
 
 namespace cavity::core {
 
@@ -42,5 +43,7 @@ public:
 
     void end_operation() { recycle_released(); }
 };
+
+static_assert(TetStorage<ArrayStorage>);
 
 }  // namespace cavity::core

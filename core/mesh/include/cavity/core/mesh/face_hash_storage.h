@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cavity/core/mesh/tet_pool.h"
+#include "cavity/core/mesh/tet_storage.h"
 
 namespace cavity::core {
 
@@ -56,5 +57,7 @@ private:
     std::size_t used_ = 0;
     mutable std::uint64_t probes_ = 0;
 };
+
+static_assert(TetStorage<FaceHashStorage>);
 
 }  // namespace cavity::core
