@@ -66,33 +66,14 @@ std::uint64_t peak_rss_bytes() {
 /// `conflicts`: the run counted conflicts (--count-conflicts); their keys appear only then.
 void write_counters(JsonWriter& json, const core::Counters& c, bool conflicts) {
     json.begin_object("counters");
-    json.integer("insertions", c.insertions);
-    json.integer("tets_created", c.tets_created);
-    json.integer("tets_deleted", c.tets_deleted);
-    json.integer("ghosts_created", c.ghosts_created);
-    json.integer("ghosts_deleted", c.ghosts_deleted);
-    json.integer("max_cavity", c.max_cavity);
-    json.integer("dig_tests", c.dig_tests);
-    json.integer("walk_steps", c.walk_steps);
-    json.integer("walk_orient_calls", c.walk_orient_calls);
-    json.integer("walk_fallbacks", c.walk_fallbacks);
-    json.integer("points_redistributed", c.points_redistributed);
-    json.integer("redistribution_steps", c.redistribution_steps);
-    json.integer("perturbations", c.perturbations);
-    json.integer("perturbation_cofactors", c.perturbation_cofactors);
-    json.integer("hash_probes", c.hash_probes);
-    if (conflicts) {
-        json.integer("conflicts_created", c.conflicts_created);
-        json.integer("ghost_conflicts_created", c.ghost_conflicts_created);
-        json.integer("conflicts_deleted", c.conflicts_deleted);
-        json.integer("ghost_conflicts_deleted", c.ghost_conflicts_deleted);
-        json.integer("live_conflicts_max", c.live_conflicts_max);
-        json.integer("conflict_tests", c.conflict_tests);
+    for (const core::CounterField& counter : core::kCounterFields) {
+        if (conflicts || counter.group != core::CounterGroup::kConflicts) {
+            json.integer(counter.name, c.*counter.field);
+        }
     }
     json.begin_object("predicate_stages");
-    constexpr const char* kKinds[] = {"orient3d", "insphere", "orient4d", "ghost"};
     for (int k = 0; k < core::kPredicateKindCount; ++k) {
-        json.begin_object(kKinds[k]);
+        json.begin_object(core::kPredicateKindNames[static_cast<std::size_t>(k)]);
         for (int s = 0; s < predicates::kStageCount; ++s) {
             json.integer(predicates::stage_name(static_cast<predicates::Stage>(s)),
                          c.stage_calls[static_cast<std::size_t>(k)][static_cast<std::size_t>(s)]);

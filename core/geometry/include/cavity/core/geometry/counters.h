@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 #include "cavity/predicates/stage.h"
 
@@ -11,6 +12,10 @@ namespace cavity::core {
 enum class PredicateKind : std::uint8_t { kOrient3d = 0, kInsphere = 1, kOrient4d = 2, kGhost = 3 };
 
 inline constexpr int kPredicateKindCount = 4;
+
+/// Names of PredicateKind, in its order (the --stats JSON's and Python's keys).
+inline constexpr std::array<std::string_view, kPredicateKindCount> kPredicateKindNames{
+    "orient3d", "insphere", "orient4d", "ghost"};
 
 /// Work done by one run, summed over insertions. Everything the chapter's analysis counts:
 /// tetrahedra created and deleted (Theorem 5.4), conflicts (Proposition 5.1-5.3 via Σ j), walk
@@ -55,6 +60,50 @@ struct Counters {
         ++stage_calls[static_cast<std::size_t>(kind)][static_cast<std::size_t>(stage)];
     }
 };
+
+/// Which writers show a counter: conflicts only mean something in a run that counted them.
+enum class CounterGroup { kEngine, kConflicts };
+
+/// One scalar counter of Counters, by the name every output uses.
+struct CounterField {
+    std::string_view name;
+    std::uint64_t Counters::*field;
+    CounterGroup group;
+};
+
+/// Every scalar counter, in the order outputs list them: the CLI's --stats JSON and Python's
+/// stats are written from this table (the per-stage counts follow it), so a new counter is its
+/// field above and its row here.
+inline constexpr std::array<CounterField, 23> kCounterFields{{
+    {"insertions", &Counters::insertions, CounterGroup::kEngine},
+    {"tets_created", &Counters::tets_created, CounterGroup::kEngine},
+    {"tets_deleted", &Counters::tets_deleted, CounterGroup::kEngine},
+    {"ghosts_created", &Counters::ghosts_created, CounterGroup::kEngine},
+    {"ghosts_deleted", &Counters::ghosts_deleted, CounterGroup::kEngine},
+    {"max_cavity", &Counters::max_cavity, CounterGroup::kEngine},
+    {"dig_tests", &Counters::dig_tests, CounterGroup::kEngine},
+    {"walk_steps", &Counters::walk_steps, CounterGroup::kEngine},
+    {"walk_orient_calls", &Counters::walk_orient_calls, CounterGroup::kEngine},
+    {"walk_fallbacks", &Counters::walk_fallbacks, CounterGroup::kEngine},
+    {"points_redistributed", &Counters::points_redistributed, CounterGroup::kEngine},
+    {"redistribution_steps", &Counters::redistribution_steps, CounterGroup::kEngine},
+    {"duplicates", &Counters::duplicates, CounterGroup::kEngine},
+    {"redundant", &Counters::redundant, CounterGroup::kEngine},
+    {"perturbations", &Counters::perturbations, CounterGroup::kEngine},
+    {"perturbation_cofactors", &Counters::perturbation_cofactors, CounterGroup::kEngine},
+    {"hash_probes", &Counters::hash_probes, CounterGroup::kEngine},
+    {"conflicts_created", &Counters::conflicts_created, CounterGroup::kConflicts},
+    {"ghost_conflicts_created", &Counters::ghost_conflicts_created, CounterGroup::kConflicts},
+    {"conflicts_deleted", &Counters::conflicts_deleted, CounterGroup::kConflicts},
+    {"ghost_conflicts_deleted", &Counters::ghost_conflicts_deleted, CounterGroup::kConflicts},
+    {"live_conflicts_max", &Counters::live_conflicts_max, CounterGroup::kConflicts},
+    {"conflict_tests", &Counters::conflict_tests, CounterGroup::kConflicts},
+}};
+
+// A field added to Counters without its row would be missing from every output.
+static_assert(sizeof(Counters) ==
+                  kCounterFields.size() * sizeof(std::uint64_t) + sizeof(Counters::stage_calls),
+              "every scalar counter of Counters has a row in kCounterFields");
 
 /// What one insertion did, handed to observers after it completes.
 struct InsertionRecord {
