@@ -18,7 +18,7 @@ trap 'rm -rf "$work"' EXIT
 prefix="$work/prefix"
 
 cmake --install "$build_dir" --prefix "$prefix" >"$work/install.log"
-for f in include/cavity/core/triangulate.h include/cavity/predicates/orient3d.h \
+for f in include/cavity/core/delaunay/triangulate.h include/cavity/predicates/orient3d.h \
          lib/cmake/cavity/cavityConfig.cmake lib/cmake/cavity/cavityTargets.cmake bin/cavity; do
   if [ ! -e "$prefix/$f" ]; then
     echo "test-install: $f was not installed" >&2

@@ -81,7 +81,7 @@ void LiveCdt::validate() const {
     for (std::size_t i = 0; i < complex.size() && i < 20; ++i) {
         message += "\n  " + complex[i];
     }
-    throw Error(located_message(plc_.source, std::nullopt, message));
+    throw InternalError(located_message(plc_.source, std::nullopt, message));
 }
 
 Cdt LiveCdt::snapshot() const {

@@ -114,12 +114,11 @@ void merge_conflict_tally(const ConflictTally& tally, Counters& counters, bool c
         counters.conflicts_deleted != tally.deleted ||
         counters.ghost_conflicts_deleted != tally.ghost_deleted ||
         counters.live_conflicts_max != tally.live_max) {
-        throw Error("internal error: the full conflict graph created " +
-                        std::to_string(tally.created) + " + " +
-                        std::to_string(tally.ghost_created) + " conflicts, the conflict counter " +
-                        std::to_string(counters.conflicts_created) + " + " +
-                        std::to_string(counters.ghost_conflicts_created),
-                    ErrorKind::kInternal);
+        throw InternalError(
+            "internal error: the full conflict graph created " + std::to_string(tally.created) +
+            " + " + std::to_string(tally.ghost_created) + " conflicts, the conflict counter " +
+            std::to_string(counters.conflicts_created) + " + " +
+            std::to_string(counters.ghost_conflicts_created));
     }
 }
 

@@ -18,7 +18,7 @@ void FacetGluer::begin(std::size_t faces) {
 }
 
 void FacetGluer::throw_too_many_vertices() {
-    throw Error("internal error: a cavity boundary has more vertices than its faces allow");
+    throw InternalError("internal error: a cavity boundary has more vertices than its faces allow");
 }
 
 std::size_t FacetGluer::slot(std::uint64_t edge) const {

@@ -40,7 +40,7 @@ Prepared prepare(const PointSet& input,
 
 /// The full conflict graph's own count of the conflicts goes into the counters; when the
 /// conflict-counting observer has counted them too, the two independent counts must agree to the
-/// unit. \throws Error ("internal error") when they do not.
+/// unit. \throws InternalError when they do not.
 void merge_conflict_tally(const ConflictTally& tally, Counters& counters, bool counted);
 
 template <class Storage, class Observer, class PointLocator>
@@ -74,9 +74,9 @@ void run(const Prepared& prep,
         const ConflictSeed seed = seek_conflict(engine, u, located, scratch);
         if (seed.duplicate != kNoVertex) {
             // first_occurrences removed every repeat; reaching here would be an engine bug.
-            throw Error("internal error: point " + std::to_string(geometry.key(u)) +
-                        " repeats point " + std::to_string(geometry.key(seed.duplicate)) +
-                        " after duplicate removal");
+            throw InternalError("internal error: point " + std::to_string(geometry.key(u)) +
+                                " repeats point " + std::to_string(geometry.key(seed.duplicate)) +
+                                " after duplicate removal");
         }
         if (seed.tet == kNoTet) {
             redundant.push_back(u);
