@@ -2,6 +2,9 @@
 # The README's test command: installs what is missing, builds, and runs the test suites.
 #   scripts/test.sh            release build, every test but the `long` label
 #   scripts/test.sh asan       the same under AddressSanitizer + UndefinedBehaviorSanitizer
+#   scripts/test.sh debug      a debug build with the expensive checks (the whole complex validated
+#                              after insertion batches, flips, deletions and polygons) over the
+#                              degenerate corpus, the CDT and the editing suites
 #   scripts/test.sh long       the long suites (>= 10^7 oracle queries per predicate, ...)
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -26,8 +26,10 @@ static_assert(core::TetStorage<FaceHashStorage>);
 // A store without gluing or ids of its own is not a TetStorage.
 struct NoAdjacency {
     void reserve(std::size_t, std::size_t) {}
+
     core::TetId add_tetrahedron(const core::TetVertices&) { return 0; }
 };
+
 static_assert(!core::TetStorage<NoAdjacency>);
 
 static_assert(core::EngineObserver<core::NullObserver>);
@@ -37,8 +39,10 @@ static_assert(core::EngineObserver<core::ConflictCountingObserver>);
 // Hooks without the counting flags: not an observer the engine can compile out.
 struct HooksOnly {
     void on_start(const core::Geometry&) {}
+
     void on_finish() {}
 };
+
 static_assert(!core::EngineObserver<HooksOnly>);
 
 template <class Storage, class Observer>
@@ -49,6 +53,7 @@ constexpr bool all_locators() {
            core::Locator<core::ConflictGraph, Engine> &&
            core::Locator<core::FullConflictGraph, Engine>;
 }
+
 static_assert(all_locators<ArrayStorage, core::NullObserver>());
 static_assert(all_locators<FaceHashStorage, core::CountingObserver>());
 
@@ -59,6 +64,7 @@ struct LocateOnly {
         return 0;
     }
 };
+
 static_assert(!core::Locator<LocateOnly, BowyerWatson<ArrayStorage, core::NullObserver>>);
 
 // The checks above are compile-time; this records that the file was built and run.

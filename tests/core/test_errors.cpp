@@ -3,9 +3,11 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "cavity/core/base/assert.h"
 #include "cavity/core/base/error.h"
 #include "cavity/core/delaunay/triangulate.h"
 
@@ -84,6 +86,45 @@ TEST(Errors, SequenceMustBeAPermutation) {
     set.weights = {0.0, 1.0};
     const std::vector<std::uint32_t> identity{0, 1, 2, 3};
     EXPECT_THROW(core::triangulate(set, identity, core::TriangulateOptions{}), core::Error);
+}
+
+// The three tiers of checks report a broken invariant as an internal error (exit 4, Python's
+// RuntimeError), with the file and line; the expensive tier runs only where it was built in.
+TEST(Assertions, AFailedAssertionIsAnInternalErrorWithItsPlace) {
+    try {
+        CAVITY_ASSERT(1 + 1 == 3, "arithmetic");
+        ADD_FAILURE() << "a false assertion passed";
+    } catch (const core::Error& e) {
+        EXPECT_EQ(e.kind(), core::ErrorKind::kInternal);
+        const std::string message = e.what();
+        EXPECT_NE(message.find("test_errors.cpp:"), std::string::npos) << message;
+        EXPECT_NE(message.find("arithmetic (1 + 1 == 3)"), std::string::npos) << message;
+    }
+    CAVITY_ASSERT(1 + 1 == 2, "arithmetic");
+}
+
+TEST(Assertions, ExpensiveChecksRunOnlyWhereBuiltIn) {
+    int evaluated = 0;
+    const auto problems = [&] {
+        ++evaluated;
+        return std::vector<std::string>{"a tetrahedron glued to itself"};
+    };
+    bool thrown = false;
+    try {
+        CAVITY_EXPENSIVE_CHECK(problems(), "the complex");
+    } catch (const core::Error& e) {
+        thrown = true;
+        EXPECT_EQ(e.kind(), core::ErrorKind::kInternal);
+        EXPECT_NE(std::string(e.what()).find("a tetrahedron glued to itself"), std::string::npos);
+    }
+#if defined(CAVITY_EXPENSIVE_CHECKS) && CAVITY_EXPENSIVE_CHECKS
+    EXPECT_TRUE(thrown);
+    EXPECT_EQ(evaluated, 1);
+#else
+    (void)problems;
+    EXPECT_FALSE(thrown);
+    EXPECT_EQ(evaluated, 0);  // not even evaluated: a release build pays nothing
+#endif
 }
 
 }  // namespace

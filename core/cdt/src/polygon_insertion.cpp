@@ -6,7 +6,9 @@
 #include <string>
 #include <unordered_set>
 
+#include "cavity/core/base/assert.h"
 #include "cavity/core/base/error.h"
+#include "cavity/core/check/complex_from_tets.h"
 #include "cavity/core/edit/flips.h"
 #include "cavity/core/mesh/star.h"
 #include "exact_plane.h"
@@ -383,7 +385,9 @@ std::vector<std::array<VertexId, 3>> insert_polygon(ArrayStorage& storage,
                                                     std::size_t facet,
                                                     ConstrainedFaces& constrained,
                                                     PolygonInsertionCounters& counters) {
-    return PolygonInserter(storage, geometry, plc, facet, constrained, counters).run();
+    auto triangles = PolygonInserter(storage, geometry, plc, facet, constrained, counters).run();
+    CAVITY_EXPENSIVE_CHECK(check_complex(storage, geometry), "the complex after a polygon");
+    return triangles;
 }
 
 std::vector<TetId> polygon_region(const ArrayStorage& storage,

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "cavity/core/base/assert.h"
+#include "cavity/core/check/complex_from_tets.h"
 #include "cavity/core/mesh/replace_tetrahedra.h"
 #include "cavity/core/mesh/star.h"
 
@@ -81,6 +83,7 @@ std::vector<TetId> apply(ArrayStorage& storage,
     std::vector<TetId> ids;
     if (valid_replacement(storage, geometry, old_tets, new_tets)) {
         ids = replace_tetrahedra(storage, old_tets, new_tets);
+        CAVITY_EXPENSIVE_CHECK(check_complex(storage, geometry), "the complex after a flip");
     }
     if (counters != nullptr) {
         if (ids.empty()) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "cavity/core/base/assert.h"
 #include "cavity/core/base/error.h"
 #include "cavity/core/check/complex_from_tets.h"
 #include "cavity/core/edit/gift_wrap.h"
@@ -46,6 +47,7 @@ std::vector<TetId> delete_vertex(ArrayStorage& storage,
         throw Error("deleting point " + std::to_string(v) +
                     ": the gift-wrapped cavity does not match its boundary");
     }
+    CAVITY_EXPENSIVE_CHECK(check_complex(storage, geometry), "the complex after a deletion");
     if (counters != nullptr) {
         ++counters->vertices_deleted;
         counters->tets_deleted += star.size();

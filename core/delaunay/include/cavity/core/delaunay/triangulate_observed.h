@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <string>
+#include <type_traits>
 #include <vector>
 
+#include "cavity/core/base/assert.h"
 #include "cavity/core/base/error.h"
+#include "cavity/core/check/complex_from_tets.h"
 #include "cavity/core/delaunay/conflict_graph.h"
 #include "cavity/core/delaunay/full_conflict_graph.h"
 #include "cavity/core/delaunay/locator.h"
@@ -94,6 +97,14 @@ void run(const Prepared& prep,
                 inserted ? static_cast<std::uint32_t>(engine.created().size()) : 0u,
                 inserted ? static_cast<std::uint32_t>(engine.deleted().size()) : 0u,
                 static_cast<std::uint32_t>(observer.counters()->walk_steps - steps_before)});
+        }
+        // Expensive builds check the whole complex after the 4th, 8th, 16th, ... insertion and
+        // the last, so the check costs O(n log n) of complex size, not O(n^2).
+        if constexpr (std::is_same_v<Storage, ArrayStorage>) {
+            if ((u & (u - 1)) == 0 || u + 1 == last) {
+                CAVITY_EXPENSIVE_CHECK(check_complex(storage, geometry),
+                                       "the triangulation after insertion " + std::to_string(u));
+            }
         }
         if (options.progress && u % report_every == 0) {
             options.progress(u, n);
