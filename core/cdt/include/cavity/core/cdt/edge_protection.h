@@ -48,13 +48,13 @@ struct Protection {
 /// the largest binade c reaches on the segment (a cap that bounds the work near zero crossings).
 /// Such points are rare on segments between arbitrary doubles: a coordinate's doubles along the
 /// segment recur every 2^q / |b_c - a_c| in t, and the three recurrences must meet.
-/// Measured (ProtectionPoint.SuccessOnDecimalEdges in tests/cdt/test_plc.cpp: about 2000 random
-/// edges per kind, coordinates with 3 decimals in [0, 10); the exact midpoint alone in brackets):
-/// a point is found on 6.6% of general edges [3.5%], 23.5% of edges in an axis-parallel plane
-/// [9.8%] and 100% of axis-parallel edges [32.6%]. So --protect works on axis-aligned decimal PLCs
-/// (AxisAlignedDecimalPlcsGetValidCdts) and fails on most general decimal ones (10 of 20 with one
-/// general triangle got a CDT, DecimalPlcsWithAGeneralTriangle); snapping such inputs to a binary
-/// grid first is the remedy.
+/// Measured (ProtectionPoint.SuccessOnDecimalEdges in tests/core/cdt/test_plc.cpp: about 2000
+/// random edges per kind, coordinates with 3 decimals in [0, 10); the exact midpoint alone in
+/// brackets): a point is found on 6.6% of general edges [3.5%], 23.5% of edges in an axis-parallel
+/// plane [9.8%] and 100% of axis-parallel edges [32.6%]. So --protect works on axis-aligned decimal
+/// PLCs (AxisAlignedDecimalPlcsGetValidCdts) and fails on most general decimal ones (10 of 20 with
+/// one general triangle got a CDT, DecimalPlcsWithAGeneralTriangle); snapping such inputs to a
+/// binary grid first is the remedy.
 std::optional<Point3> protection_point(const Point3& a, const Point3& b);
 
 /// Splits unprotected PLC edges at protection points (appended to plc.points, replacing the edge in

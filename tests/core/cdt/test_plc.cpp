@@ -17,7 +17,7 @@
 #include "cavity/core/delaunay/triangulate.h"
 #include "plc_builders.h"
 // White-box: the region rule is internal to the core.
-#include "../../core/cdt/src/exact_plane.h"
+#include "../../../core/cdt/src/exact_plane.h"
 
 namespace cavity::core {
 namespace {

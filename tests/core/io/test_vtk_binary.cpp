@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "../../core/io/src/vtk_binary.h"
+#include "../../../core/io/src/vtk_binary.h"
 
 namespace cavity::core {
 namespace {

@@ -69,7 +69,7 @@ grep -q "redundant" err.txt || fail "weighted: redundant points not reported"
 "$cavity" check w.node w.ele --weighted --quiet || fail "weighted: check rejects"
 
 # --delete: the result is the (exactly checked) triangulation of the other points; the deleted
-# ones are gone. (That it equals triangulating without them is tested in tests/cdt.)
+# ones are gone. (That it equals triangulating without them is tested in tests/core/edit.)
 "$cavity" generate grid 125 -o grid.node >/dev/null
 "$cavity" triangulate grid.node -o deleted --delete 0,7,62,124 --check --quiet || fail "delete: failed"
 awk 'NR>1 && !/^#/ {for (i=2;i<=5;i++) if ($i==0 || $i==7 || $i==62 || $i==124) bad=1} END {exit bad}' deleted.ele \
