@@ -92,23 +92,18 @@ LiveCdt::Carrier LiveCdt::locate(const Point3& p) {
             ++hint_;
         }
     }
-    TetId t = hint_;
-    int entered = -1;
-    for (;;) {
-        ++counters_.walk_steps;
-        const TetVertices& v = storage_.vertices(t);
-        Carrier carrier;
-        carrier.tet = t;
-        if (is_ghost(v)) {
-            return carrier;  // entered through the hull triangle with p strictly in front
-        }
-        walk_state_ ^= walk_state_ << 13;
-        walk_state_ ^= walk_state_ >> 7;
-        walk_state_ ^= walk_state_ << 17;
-        const int first = static_cast<int>(walk_state_ & 3u);
-        int exit = -1;
-        for (int k = 0; k < 4 && exit < 0; ++k) {
-            const int f = (first + k) & 3;
+    Carrier carrier;
+    stochastic_walk(
+        storage_,
+        hint_,
+        walk_random_,
+        [&](TetId t, const TetVertices& v) {
+            ++counters_.walk_steps;
+            carrier = Carrier{};
+            carrier.tet = t;
+            return is_ghost(v);  // entered through the hull triangle with p strictly in front
+        },
+        [&](TetId, const TetVertices& v, int f, int entered) {
             const auto tri = facet_vertices(v, f);
             const Sign s = Geometry::orient3d(geometry_.point(tri[0]),
                                               geometry_.point(tri[1]),
@@ -116,22 +111,19 @@ LiveCdt::Carrier LiveCdt::locate(const Point3& p) {
                                               p,
                                               nullptr);
             if (s == Sign::kNeg && f != entered) {
-                exit = f;
-            } else if (s == Sign::kPos) {
+                return true;
+            }
+            if (s == Sign::kPos) {
                 // Facet f's sign is the barycentric sign of vertex f: nonzero puts it in the
                 // carrier.
                 carrier.v[static_cast<std::size_t>(carrier.size++)] =
                     v[static_cast<std::size_t>(f)];
             }
-        }
-        if (exit < 0) {
-            std::sort(carrier.v.begin(), carrier.v.end());  // unused slots hold kNoVertex: last
-            return carrier;
-        }
-        const HalfFacet across = storage_.adjacent(t, exit);
-        t = tet_of(across);
-        entered = facet_of(across);
-    }
+            return false;
+        });
+    // Unused slots hold kNoVertex: last. (A ghost's carrier is empty: nothing to sort.)
+    std::sort(carrier.v.begin(), carrier.v.end());
+    return carrier;
 }
 
 bool LiveCdt::conflicts(TetId t, VertexId u) {

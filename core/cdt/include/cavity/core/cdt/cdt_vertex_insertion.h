@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cavity/core/cdt/cdt.h"
+#include "cavity/core/delaunay/stochastic_walk.h"
 #include "cavity/core/geometry/geometry.h"
 #include "cavity/core/mesh/array_storage.h"
 
@@ -170,7 +171,7 @@ private:
     std::vector<std::uint32_t> inserted_;
     CdtInsertionCounters counters_;
     TetId hint_ = kNoTet;  ///< where the next walk starts
-    std::uint64_t walk_state_ = 0x9E37'79B9'7F4A'7C15u;
+    WalkRandom walk_random_{0x9E37'79B9'7F4A'7C15u};
     std::vector<std::uint32_t> stamp_;  ///< stamp_[t] == epoch_: t is in the current cavity
     std::uint32_t epoch_ = 0;
 };

@@ -7,6 +7,7 @@
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/delaunay/bowyer_watson.h"
+#include "cavity/core/delaunay/stochastic_walk.h"
 
 namespace cavity::core {
 
@@ -144,33 +145,26 @@ private:
                      TetId t,
                      Counters* counters) {
         const Geometry& g = engine.geometry();
-        Storage& storage = engine.storage();
         const Point3& q = g.point(p);
-        int entered = -1;
-        for (;;) {
-            if (counters != nullptr) {
-                ++counters->redistribution_steps;
-            }
-            const TetVertices& v = storage.vertices(t);
-            const bool ghost = is_ghost(v);
-            random_ ^= random_ << 13;
-            random_ ^= random_ >> 7;
-            random_ ^= random_ << 17;
-            const int first = static_cast<int>(random_ & 3u);
-            int exit = -1;
-            for (int k = 0; k < 4 && exit < 0; ++k) {
-                const int f = (first + k) & 3;
+        return stochastic_walk(
+            engine.storage(),
+            t,
+            random_,
+            [&](TetId, const TetVertices&) {
+                if (counters != nullptr) {
+                    ++counters->redistribution_steps;
+                }
+                return false;
+            },
+            [&](TetId, const TetVertices& v, int f, int entered) {
                 if (f == entered) {
-                    continue;
+                    return false;
                 }
                 const auto tri = facet_vertices(v, f);
-                if (!ghost || f == 3) {
-                    if (Geometry::orient3d(
-                            g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), q, counters) ==
-                        Sign::kNeg) {
-                        exit = f;
-                    }
-                    continue;
+                if (!is_ghost(v) || f == 3) {
+                    return Geometry::orient3d(
+                               g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), q, counters) ==
+                           Sign::kNeg;
                 }
                 // A ghost facet through g: the plane through O and the hull edge. The region lies
                 // on the side of that plane where O's tetrahedron (v0, v1, v2, O) has its vertex
@@ -178,18 +172,9 @@ private:
                 const auto at = [&](VertexId w) -> const Point3& {
                     return w == kGhostVertex ? interior_ : g.point(w);
                 };
-                if (Geometry::orient3d(at(tri[0]), at(tri[1]), at(tri[2]), q, counters) ==
-                    Sign::kPos) {
-                    exit = f;
-                }
-            }
-            if (exit < 0) {
-                return t;
-            }
-            const HalfFacet across = storage.adjacent(t, exit);
-            t = tet_of(across);
-            entered = facet_of(across);
-        }
+                return Geometry::orient3d(at(tri[0]), at(tri[1]), at(tri[2]), q, counters) ==
+                       Sign::kPos;
+            });
     }
 
     Point3 interior_{};
@@ -197,7 +182,7 @@ private:
     std::vector<VertexId> next_;
     std::vector<VertexId> head_;
     std::vector<std::pair<TetId, TetId>> start_of_old_;
-    std::uint64_t random_ = 0x2545'F491'4F6C'DD1Dull;
+    WalkRandom random_{0x2545'F491'4F6C'DD1Dull};
 };
 
 }  // namespace cavity::core
