@@ -138,24 +138,7 @@ bool GiftWrapEngine::in_outer_halfspace(const TetVertices& ghost, VertexId u) {
         return false;
     }
     ++counters_.insphere_calls;
-    const perturbation::Keys4 keys{geometry_.key(ghost[0]),
-                                   geometry_.key(ghost[1]),
-                                   geometry_.key(ghost[2]),
-                                   geometry_.key(u)};
-    if (!geometry_.weighted()) {
-        return perturbation::outer_halfspace_sos(geometry_.point(ghost[0]),
-                                                 geometry_.point(ghost[1]),
-                                                 geometry_.point(ghost[2]),
-                                                 geometry_.point(behind),
-                                                 geometry_.point(u),
-                                                 keys) == Sign::kPos;
-    }
-    return perturbation::outer_halfspace_weighted_sos(geometry_.weighted_point(ghost[0]),
-                                                      geometry_.weighted_point(ghost[1]),
-                                                      geometry_.weighted_point(ghost[2]),
-                                                      geometry_.weighted_point(behind),
-                                                      geometry_.weighted_point(u),
-                                                      keys) == Sign::kPos;
+    return geometry_.conflicts_ghost_in_plane(ghost, u, behind, nullptr);
 }
 
 VertexId GiftWrapEngine::ghost_apex(const TetVertices& partial, VertexId behind_apex) {

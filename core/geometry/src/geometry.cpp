@@ -65,6 +65,13 @@ bool Geometry::conflicts_ghost(const TetVertices& t,
             break;
         }
     }
+    return conflicts_ghost_in_plane(t, u, behind, counters);
+}
+
+bool Geometry::conflicts_ghost_in_plane(const TetVertices& t,
+                                        VertexId u,
+                                        VertexId behind,
+                                        Counters* counters) const {
     const perturbation::Keys4 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[u]};
     perturbation::SosVerdict v;
     if (!weighted()) {

@@ -86,6 +86,15 @@ public:
                          const std::array<VertexId, 4>& interior,
                          Counters* counters) const;
 
+    /// The coplanar case of conflicts_ghost: u on the plane of the hull triangle of ghost t,
+    /// `behind` a vertex strictly behind that plane (it orients the plane). True when u is inside
+    /// the triangle's perturbed circumdisk (weighted: the perturbed power test in the plane), as
+    /// the engine's ghost test decides; gift-wrapping asks the same question.
+    bool conflicts_ghost_in_plane(const TetVertices& t,
+                                  VertexId u,
+                                  VertexId behind,
+                                  Counters* counters) const;
+
 private:
     /// The perturbed in-sphere test of u against solid t when the exact one is zero (out of
     /// line: rare, and kept off the inlined fast path).
