@@ -5,11 +5,11 @@
 #include <map>
 #include <set>
 #include <tuple>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/mesh/facet_gluer.h"
 
 namespace cavity::core {
 
@@ -28,10 +28,6 @@ std::array<std::uint32_t, 2> sorted_edge(VertexId a, VertexId b) {
 
 bool has_ghost(const Triangle& t) {
     return t[0] == kGhostVertex || t[1] == kGhostVertex || t[2] == kGhostVertex;
-}
-
-std::uint64_t directed(VertexId p, VertexId q) {
-    return (std::uint64_t{p} << 32) | q;
 }
 
 }  // namespace
@@ -197,24 +193,17 @@ LiveCdt::Star LiveCdt::make_star(const Cavity& cavity, VertexId u) const {
     Star star;
     star.tets.reserve(cavity.faces.size());
     for (const CavityFace& face : cavity.faces) {
-        const Triangle tri = facet_vertices(storage_.vertices(face.inner), face.facet);
-        TetVertices v{tri[0], tri[1], tri[2], u};
-        int u_slot = 3;
-        for (int i = 0; i < 3; ++i) {
-            if (v[static_cast<std::size_t>(i)] == kGhostVertex) {
-                v = rotate_to_last(v, i);
-                u_slot = static_cast<int>(std::find(v.begin(), v.end(), u) - v.begin());
-                break;
-            }
-        }
+        const auto [v, u_slot] = cone(facet_vertices(storage_.vertices(face.inner), face.facet), u);
         star.tets.push_back(v);
         star.outer.push_back(u_slot);
     }
-    // Around u, the face rotated to (u, p, q) meets the one rotated to (u, q, p).
-    std::unordered_map<std::uint64_t, HalfFacet> open;
+    // Around u, the face rotated to (u, p, q) meets the one rotated to (u, q, p): the engine's
+    // gluer pairs them (by the vertex ids: a star is built once per vertex, off any hot path).
+    FacetGluer gluer;
+    gluer.begin(star.tets.size());
     for (std::size_t n = 0; n < star.tets.size(); ++n) {
         const TetVertices& v = star.tets[n];
-        const auto a = static_cast<std::size_t>(std::find(v.begin(), v.end(), u) - v.begin());
+        const auto a = static_cast<std::size_t>(star.outer[n]);
         for (std::size_t s = 0; s < 4; ++s) {
             if (s == a) {
                 continue;
@@ -222,15 +211,13 @@ LiveCdt::Star LiveCdt::make_star(const Cavity& cavity, VertexId u) const {
             const VertexId p = v[static_cast<std::size_t>(kApexFaceEdge[a][s][0])];
             const VertexId q = v[static_cast<std::size_t>(kApexFaceEdge[a][s][1])];
             const HalfFacet h = half_facet(static_cast<TetId>(n), static_cast<int>(s));
-            const auto partner = open.find(directed(q, p));
-            if (partner != open.end()) {
-                star.around.push_back({partner->second, h});
-                open.erase(partner);
-            } else {
-                open.emplace(directed(p, q), h);
+            const HalfFacet partner = gluer.match_hashed(p, q, h);
+            if (partner != kNoHalfFacet) {
+                star.around.push_back({partner, h});
             }
         }
     }
+    gluer.end();
     return star;
 }
 

@@ -192,16 +192,7 @@ private:
     /// AddTetrahedron(u, face): the face is facet f of the deleted tetrahedron `inner`, whose
     /// other side (`across`) survives.
     void fill_cavity_face(VertexId u, TetId inner, int f, HalfFacet across) {
-        const auto tri = facet_vertices(storage_.vertices(inner), f);
-        TetVertices v{tri[0], tri[1], tri[2], u};
-        int u_slot = 3;
-        for (int i = 0; i < 3; ++i) {
-            if (v[static_cast<std::size_t>(i)] == kGhostVertex) {
-                v = rotate_to_last(v, i);
-                u_slot = static_cast<int>(std::find(v.begin(), v.end(), u) - v.begin());
-                break;
-            }
-        }
+        const auto [v, u_slot] = cone(facet_vertices(storage_.vertices(inner), f), u);
         const TetId t = add(v, step_);
         storage_.glue(half_facet(t, u_slot), across);
         created_.push_back(t);

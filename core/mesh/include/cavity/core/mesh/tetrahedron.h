@@ -94,4 +94,30 @@ constexpr TetVertices rotate_to_last(const TetVertices& v, int i) {
     return {f[0], f[1], f[2], v[static_cast<std::size_t>(i)]};
 }
 
+/// A new tetrahedron of a cavity retriangulation (§5.2, §5.7): a boundary face joined to the new
+/// vertex u, and the slot of u, whose facet is that face.
+struct Cone {
+    TetVertices v;
+    int u_slot;
+};
+
+/// Joins the cavity face `tri` (as facet_vertices lists a facet of the deleted tetrahedron inside,
+/// so that u is on its positive side) to u, stored as every tetrahedron is: a ghost keeps its
+/// ghost vertex in slot 3. Bowyer-Watson and the CDT's vertex insertion both build their new
+/// tetrahedra with it.
+constexpr Cone cone(const std::array<VertexId, 3>& tri, VertexId u) {
+    TetVertices v{tri[0], tri[1], tri[2], u};
+    for (int i = 0; i < 3; ++i) {
+        if (v[static_cast<std::size_t>(i)] == kGhostVertex) {
+            v = rotate_to_last(v, i);
+            int u_slot = 0;
+            while (v[static_cast<std::size_t>(u_slot)] != u) {
+                ++u_slot;
+            }
+            return {v, u_slot};
+        }
+    }
+    return {v, 3};
+}
+
 }  // namespace cavity::core
