@@ -181,12 +181,13 @@ def early_part(source, n):
 
 
 def stratified(whole, early):
-    """Σj/n as the early insertions' mean over all their seeds plus the rest's mean over the
-    whole runs' seeds (a whole run's Σj/n minus its own early part), with a bootstrap interval
-    that resamples the two sets of seeds independently. `whole`: {seed: Σj/n}; `early`:
-    {seed: early Σj/n}, holding every seed of `whole`. Both parts are unbiased, so is the sum;
-    the seeds beyond the whole runs' only narrow the part that varies most."""
-    groups = {"early": list(early.values()),
+    """Σj/n as two independent strata: the early insertions' mean over the prefix seeds that the
+    whole runs do not use, plus the rest's mean over the whole runs' seeds (a whole run's Σj/n
+    minus its own early part). Disjoint seeds are different point sets and orders, so the two
+    means are independent, their sum is unbiased, and a bootstrap that resamples the two sets of
+    seeds apart is valid. `whole`: {seed: Σj/n}; `early`: {seed: early Σj/n}, holding every seed
+    of `whole` and more."""
+    groups = {"early": [early[s] for s in sorted(early) if s not in whole],
               "rest": [whole[s] - early[s] for s in sorted(whole)]}
     return seed_bootstrap(groups, lambda g: mean(g["early"]) + mean(g["rest"]), seed=57), groups
 
@@ -205,7 +206,8 @@ def stratified_text(estimates, n, k):
             "seeds mostly through the first insertions. The `theorem-prefix` suite inserts only "
             f"the first {k} points of the same orders (same points, seed and bootstrap) and counts "
             "their conflicts against all n points; Σj/n is then the mean of that early part over "
-            "all its seeds plus the mean of the rest over the whole runs' seeds: "
+            "the prefix seeds the whole runs do not use plus the mean of the rest over the whole "
+            "runs' seeds (independent strata: disjoint seeds are different points and orders): "
             + "; ".join(parts) + ".")
 
 
@@ -271,7 +273,7 @@ def theorem_section(inp, paper=None):
                     widths[key] = max(hi - m, m - lo) / m if len(v) > 1 else None
                 whole = {int(r["seed"]): float(r["conflicts_per_point"]) for r in at_n}
                 mine_early = early.get(dist, {})
-                if len(whole) > 1 and set(whole) <= set(mine_early) and len(mine_early) > len(whole):
+                if len(whole) > 1 and set(whole) <= set(mine_early) and len(mine_early) > len(whole) + 1:
                     (m, lo, hi), groups = stratified(whole, mine_early)
                     estimates.append((dist, (m, lo, hi), groups, widths["conflicts"]))
                     widths["conflicts"] = max(hi - m, m - lo) / m
