@@ -182,8 +182,8 @@ void report_skipped(const core::PointSet& points, const core::Triangulation& tri
         for (std::size_t i = 0; i < tri.duplicates.size() && i < 10; ++i) {
             std::fprintf(stderr,
                          " %llu->%llu",
-                         static_cast<unsigned long long>(tri.duplicates[i][0] + base),
-                         static_cast<unsigned long long>(tri.duplicates[i][1] + base));
+                         static_cast<unsigned long long>(tri.duplicates[i][0]) + base,
+                         static_cast<unsigned long long>(tri.duplicates[i][1]) + base);
         }
         std::fprintf(stderr, "%s\n", tri.duplicates.size() > 10 ? " ..." : "");
     }
@@ -192,7 +192,7 @@ void report_skipped(const core::PointSet& points, const core::Triangulation& tri
                      "cavity: %zu redundant (submerged) weighted point(s), not vertices:",
                      tri.redundant.size());
         for (std::size_t i = 0; i < tri.redundant.size() && i < 10; ++i) {
-            std::fprintf(stderr, " %llu", static_cast<unsigned long long>(tri.redundant[i] + base));
+            std::fprintf(stderr, " %llu", static_cast<unsigned long long>(tri.redundant[i]) + base);
         }
         std::fprintf(stderr, "%s\n", tri.redundant.size() > 10 ? " ..." : "");
     }

@@ -138,6 +138,7 @@ ProgramOutcome run_program(const std::filesystem::path& program,
     std::vector<std::string> words{program.string()};
     words.insert(words.end(), arguments.begin(), arguments.end());
     std::vector<char*> argv;
+    argv.reserve(words.size() + 1);
     for (std::string& w : words) {
         argv.push_back(w.data());
     }
@@ -182,7 +183,7 @@ std::filesystem::path find_on_path(const std::string& name) {
         if (dir.empty()) {
             continue;
         }
-        const std::filesystem::path candidate = std::filesystem::path(dir) / name;
+        std::filesystem::path candidate = std::filesystem::path(dir) / name;
         if (access(candidate.c_str(), X_OK) == 0 && std::filesystem::is_regular_file(candidate)) {
             return candidate;
         }

@@ -154,7 +154,7 @@ Plc nested_boxes(std::size_t n, std::uint64_t seed, std::string source) {
     const auto off_plane = [&] {
         double c = 0;
         do {
-            c = dyadic(random, 2 * boxes, 64);
+            c = dyadic(random, 2 * std::uint64_t{boxes}, 64);
         } while (c == std::floor(c));
         return c;
     };

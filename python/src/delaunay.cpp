@@ -48,7 +48,7 @@ struct Stopwatch {
 /// A read-only int32 numpy array that takes ownership of `values` without copying them. T is
 /// std::int32_t, std::uint32_t (ids < 2^31, so the bits are the same) or an array of them.
 template <class T>
-py::array_t<std::int32_t> adopt(std::vector<T>&& values, std::vector<py::ssize_t> shape) {
+py::array_t<std::int32_t> adopt(std::vector<T>&& values, const std::vector<py::ssize_t>& shape) {
     static_assert(sizeof(T) % sizeof(std::int32_t) == 0);
     auto* heap = new std::vector<T>(std::move(values));
     py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<T>*>(p); });

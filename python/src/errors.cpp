@@ -10,25 +10,27 @@ void bind_errors(py::module_& m) {
     // input with its affine dimension, an unknown option name) is Python's ValueError; a refusal
     // of the system (a failed write) is OSError; a broken invariant of cavity is RuntimeError,
     // so that a script catching ValueError for bad data never swallows a bug.
-    py::register_exception_translator([](std::exception_ptr p) {
-        try {
-            if (p) {
-                std::rethrow_exception(p);
+    // pybind11 takes a translator of exactly this signature (by value).
+    py::register_exception_translator(
+        [](std::exception_ptr p) {  // NOLINT(performance-unnecessary-value-param)
+            try {
+                if (p) {
+                    std::rethrow_exception(p);
+                }
+            } catch (const core::Error& e) {
+                switch (e.kind()) {
+                    case core::ErrorKind::kInput:
+                        PyErr_SetString(PyExc_ValueError, e.what());
+                        break;
+                    case core::ErrorKind::kSystem:
+                        PyErr_SetString(PyExc_OSError, e.what());
+                        break;
+                    case core::ErrorKind::kInternal:
+                        PyErr_SetString(PyExc_RuntimeError, e.what());
+                        break;
+                }
             }
-        } catch (const core::Error& e) {
-            switch (e.kind()) {
-                case core::ErrorKind::kInput:
-                    PyErr_SetString(PyExc_ValueError, e.what());
-                    break;
-                case core::ErrorKind::kSystem:
-                    PyErr_SetString(PyExc_OSError, e.what());
-                    break;
-                case core::ErrorKind::kInternal:
-                    PyErr_SetString(PyExc_RuntimeError, e.what());
-                    break;
-            }
-        }
-    });
+        });
     py::register_exception<ValidationFailure>(m, "ValidationError", PyExc_RuntimeError);
 }
 

@@ -38,7 +38,7 @@ DoubleArray as_doubles(const py::handle& array, const char* name) {
 }  // namespace
 
 DoubleArray require_rows(const py::handle& array, const char* name, py::ssize_t width) {
-    const DoubleArray a = as_doubles(array, name);
+    DoubleArray a = as_doubles(array, name);
     if (a.ndim() != 2 || a.shape(1) != width) {
         throw py::value_error(std::string(name) + " must have shape (n, " + std::to_string(width) +
                               "), got " + shape_text(a));

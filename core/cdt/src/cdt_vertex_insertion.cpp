@@ -149,6 +149,7 @@ LiveCdt::Cavity LiveCdt::dig(const Carrier& carrier, VertexId u) {
     stamp_[carrier.tet] = epoch_;
     cavity.tets.push_back(carrier.tet);
     std::vector<HalfFacet> stack;
+    stack.reserve(4);
     for (int f = 0; f < 4; ++f) {
         stack.push_back(half_facet(carrier.tet, f));
     }

@@ -55,6 +55,7 @@ std::string_view name_of(const std::array<NamedKind<Kind>, N>& table, Kind kind)
 template <class Kind, std::size_t N>
 std::vector<std::string> names_of(const std::array<NamedKind<Kind>, N>& table) {
     std::vector<std::string> names;
+    names.reserve(N);
     for (const auto& row : table) {
         names.emplace_back(row.name);
     }
