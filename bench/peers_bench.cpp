@@ -13,8 +13,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <sys/resource.h>
 
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 
 namespace {

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,12 +10,11 @@
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/check/validate.h"
-#include "cavity/core/delaunay/triangulate.h"
-#include "cavity/core/edit/vertex_deletion.h"
 #include "cavity/core/io/atomic_file.h"
 #include "cavity/core/io/mesh_io.h"
 #include "cavity/core/io/point_io.h"
 #include "cavity/core/io/tet_adjacency.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/core/version.h"
 #include "commands.h"
@@ -147,28 +147,24 @@ void write_stats(core::AtomicFileGroup& files,
 }
 
 /// Adds the mesh files to the run's group: TetGen's .node/.ele (with .neigh and .face when asked,
-/// numbered along the insertion order's curve so that neighbours are near in the files) or .vtu.
+/// read off the live triangulation and numbered along the insertion order so that neighbours are
+/// near in the files) or .vtu.
 void write_mesh(core::AtomicFileGroup& files,
                 const TriangulateArgs& args,
                 const core::PointSet& points,
                 const core::Triangulation& tri,
-                const core::InsertionOrder& order) {
+                const std::optional<core::Adjacency>& adjacency) {
     if (args.format == "vtu") {
         core::VtuOptions options;
         options.encoding = args.ascii ? core::VtuEncoding::kAscii : core::VtuEncoding::kBinary;
         core::write_vtu(files, args.prefix, points, tri.tets, options);
         return;
     }
-    if (!args.neighbors && !args.hull_faces) {
+    if (!adjacency) {
         core::write_tetgen(files, args.prefix, points, tri.tets);
         return;
     }
-    std::vector<std::uint32_t> rank(order.sequence.size());
-    for (std::size_t i = 0; i < order.sequence.size(); ++i) {
-        rank[order.sequence[i]] = static_cast<std::uint32_t>(i);
-    }
-    const core::Adjacency adjacency = core::build_adjacency(tri.tets, rank);
-    core::write_tetgen(files, args.prefix, points, adjacency, {args.neighbors, args.hull_faces});
+    core::write_tetgen(files, args.prefix, points, *adjacency, {args.neighbors, args.hull_faces});
 }
 
 /// Duplicates and redundant points are never dropped silently: a summary goes to stderr (the
@@ -196,19 +192,6 @@ void report_skipped(const core::PointSet& points, const core::Triangulation& tri
         }
         std::fprintf(stderr, "%s\n", tri.redundant.size() > 10 ? " ..." : "");
     }
-}
-
-/// --delete: removes the listed points (numbered like the input) from the triangulation by
-/// vertex deletion (gift-wrapping each star), keeping the instrumentation counters.
-core::Triangulation delete_listed(const core::PointSet& points,
-                                  const core::Triangulation& tri,
-                                  const std::vector<std::uint64_t>& listed) {
-    core::Triangulation result =
-        core::delete_vertices(points, tri, zero_based_ids(points, listed, "--delete"));
-    result.counters = tri.counters;
-    result.counters.duplicates = result.duplicates.size();
-    result.counters.redundant = result.redundant.size();
-    return result;
 }
 
 void run_triangulate(const TriangulateArgs& args) {
@@ -249,20 +232,49 @@ void run_triangulate(const TriangulateArgs& args) {
     ProgressBar bar("triangulating", !args.quiet);
     options.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
     clock = std::chrono::steady_clock::now();
-    core::Triangulation tri = naming_memory("triangulating " + args.input + " (" + size + ")", [&] {
+    // Deletion and the adjacency files work on the live triangulation; a plain run releases it
+    // as it writes the list of tetrahedra (a lower peak).
+    const bool adjacency_files = args.format == "tetgen" && (args.neighbors || args.hull_faces);
+    const bool live = adjacency_files || !args.delete_ids.empty();
+    // Errors name the input file.
+    const auto named = [&](auto&& build) {
         try {
-            return core::triangulate(points, order.sequence, options);
+            return build();
         } catch (const core::Error& e) {
             throw core::Error(args.input + ": " + e.what(), e.kind());
         }
-    });
-    bar.finish();
-    timings.triangulate_s = seconds_since(clock);
-    if (!args.delete_ids.empty()) {
-        clock = std::chrono::steady_clock::now();
-        tri = naming_memory("deleting vertices of " + args.input + " (" + size + ")",
-                            [&] { return delete_listed(points, tri, args.delete_ids); });
-        timings.delete_s = seconds_since(clock);
+    };
+    core::Triangulation tri;
+    std::optional<core::Adjacency> adjacency;
+    if (!live) {
+        tri = naming_memory("triangulating " + args.input + " (" + size + ")", [&] {
+            return named([&] { return core::triangulate(points, order.sequence, options); });
+        });
+        bar.finish();
+        timings.triangulate_s = seconds_since(clock);
+    } else {
+        core::DelaunayTriangulation dt =
+            naming_memory("triangulating " + args.input + " (" + size + ")", [&] {
+                return named(
+                    [&] { return core::DelaunayTriangulation(points, order.sequence, options); });
+            });
+        bar.finish();
+        timings.triangulate_s = seconds_since(clock);
+        if (!args.delete_ids.empty()) {
+            clock = std::chrono::steady_clock::now();
+            naming_memory("deleting vertices of " + args.input + " (" + size + ")", [&] {
+                dt.remove(zero_based_ids(points, args.delete_ids, "--delete"));
+                return 0;
+            });
+            timings.delete_s = seconds_since(clock);
+        }
+        if (adjacency_files) {
+            adjacency = dt.adjacency();
+        }
+        tri = std::move(dt).release();
+        // The counters describe the build; the lists, what is left after the deletions.
+        tri.counters.duplicates = tri.duplicates.size();
+        tri.counters.redundant = tri.redundant.size();
     }
     report_skipped(points, tri);
 
@@ -291,7 +303,7 @@ void run_triangulate(const TriangulateArgs& args) {
     clock = std::chrono::steady_clock::now();
     naming_memory("writing the mesh of " + args.input + " (" + size + ")", [&] {
         ProgressStage stage("writing " + args.prefix, !args.quiet);
-        write_mesh(files, args, points, tri, order);
+        write_mesh(files, args, points, tri, adjacency);
         timings.write_s = seconds_since(clock);
         if (!args.stats.empty()) {
             write_stats(files, args, points, tri, timings);
@@ -437,6 +449,12 @@ void add_triangulate_command(CLI::App& app) {
         refuse_stats_over_a_file_of_the_run(*args);
         if (args->format != "tetgen" && (args->neighbors || args->hull_faces)) {
             throw CLI::ValidationError("--neigh/--faces", "TetGen files: not with --format vtu");
+        }
+        if (args->storage != "array" &&
+            (args->neighbors || args->hull_faces || !args->delete_ids.empty())) {
+            throw CLI::ValidationError("--storage",
+                                       "--delete, --neigh and --faces use the live triangulation, "
+                                       "which keeps the array storage");
         }
         if (args->format != "vtu" && args->ascii) {
             throw CLI::ValidationError("--ascii", "only with --format vtu");

@@ -8,8 +8,8 @@
 #include "cavity/core/base/error.h"
 #include "cavity/core/check/orientation.h"
 #include "cavity/core/check/validate.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/input/point_set.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 
 int main() {

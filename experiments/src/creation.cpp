@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/experiments/life_cycle.h"
 #include "cavity/perturbation/sos.h"
 #include "cavity/predicates/orient3d.h"

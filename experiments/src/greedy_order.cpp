@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "cavity/core/base/error.h"
-#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/live/triangulate.h"
 
 namespace cavity::experiments {
 

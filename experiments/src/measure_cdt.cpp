@@ -8,7 +8,7 @@
 #include "cavity/core/cdt/edge_protection.h"
 #include "cavity/core/cdt/polygon_insertion.h"
 #include "cavity/core/check/complex_from_tets.h"
-#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/experiments/measure.h"
 #include "cavity/experiments/plc_families.h"
 #include "format.h"

@@ -2,8 +2,8 @@
 #include <chrono>
 #include <cmath>
 
-#include "cavity/core/delaunay/triangulate_observed.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/creation.h"
 #include "cavity/experiments/jtets.h"

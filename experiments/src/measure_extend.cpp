@@ -4,8 +4,8 @@
 
 #include "cavity/core/base/random.h"
 #include "cavity/core/delaunay/conflict_counter.h"
-#include "cavity/core/delaunay/triangulate_observed.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/experiments/measure.h"
 #include "format.h"
 

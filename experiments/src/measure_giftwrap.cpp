@@ -2,9 +2,9 @@
 #include <cstdio>
 
 #include "canonical.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/edit/gift_wrap.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/measure.h"
 #include "format.h"

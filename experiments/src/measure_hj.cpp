@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "cavity/core/delaunay/conflict_counter.h"
-#include "cavity/core/delaunay/triangulate_observed.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/measure.h"
 #include "format.h"

@@ -2,8 +2,8 @@
 #include <string>
 
 #include "cavity/core/base/error.h"
-#include "cavity/core/delaunay/triangulate_observed.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/measure.h"
 #include "cavity/experiments/memory_model.h"
@@ -40,7 +40,7 @@ void run_traced(const core::detail::Prepared& prep,
                 core::Triangulation& out) {
     TracedArrayStorage storage(trace);
     LocalityObserver observer(trace);
-    core::detail::run(prep, options, locator, storage, observer, out);
+    core::detail::run(prep.geometry, options, locator, storage, observer, out);
 }
 
 }  // namespace

@@ -4,9 +4,9 @@
 #include <unistd.h>
 
 #include "cavity/core/base/error.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/gen/generate.h"
 #include "cavity/core/io/point_io.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/measure.h"
 #include "child_process.h"

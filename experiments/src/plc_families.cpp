@@ -10,7 +10,7 @@
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/base/random.h"
-#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/mesh/tetrahedron.h"
 #include "cavity/predicates/orient3d.h"
 

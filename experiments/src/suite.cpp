@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "cavity/core/base/error.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/plc_families.h"
 #include "format.h"

@@ -1,4 +1,4 @@
-// cavity.Delaunay: scipy.spatial.Delaunay's shape over cavity::core::triangulate.
+// cavity.Delaunay: scipy.spatial.Delaunay's shape over cavity's live triangulation.
 
 #include <array>
 #include <chrono>
@@ -14,9 +14,9 @@
 
 #include "bindings.h"
 #include "cavity/core/check/validate.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/io/mesh_io.h"
 #include "cavity/core/io/tet_adjacency.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "input_arrays.h"
 #include "stats_dict.h"
@@ -75,6 +75,21 @@ Built build(const core::PointSet& input,
     const core::InsertionOrder order = core::make_insertion_order(input.points, order_options);
     b.order_s = clock.elapsed();
     clock = Stopwatch();
+    if (options.storage == core::StorageKind::kArray) {
+        // The live triangulation's own adjacency, read off in linear time: no facet matching.
+        const core::DelaunayTriangulation dt(input, order.sequence, options);
+        b.triangulate_s = clock.elapsed();
+        clock = Stopwatch();
+        b.adjacency = dt.adjacency();
+        b.triangulation.duplicates = dt.duplicates();
+        b.triangulation.redundant = dt.redundant();
+        b.triangulation.counters = dt.counters();
+        b.triangulation.hull_triangles = b.adjacency.hull.size();
+        b.triangulation.storage_bytes = dt.storage().bytes();
+        b.adjacency_s = clock.elapsed();
+        return b;
+    }
+    // The face hash table is not kept live: its tetrahedra are matched facet by facet.
     b.triangulation = core::triangulate(input, order.sequence, options);
     b.triangulate_s = clock.elapsed();
     clock = Stopwatch();

@@ -17,7 +17,8 @@ declare -A allowed=(
   [delaunay]="base input mesh geometry check io predicates perturbation"
   [check]="base input mesh geometry io predicates perturbation"
   [edit]="base input mesh geometry delaunay check predicates perturbation"
-  [cdt]="base input mesh geometry delaunay check edit io predicates perturbation boost gmp"
+  [live]="base input mesh geometry delaunay check edit io predicates perturbation"
+  [cdt]="base input mesh geometry delaunay check edit live io predicates perturbation boost gmp"
 )
 
 status=0

@@ -6,7 +6,7 @@
 #include <numeric>
 #include <vector>
 
-#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/live/triangulate.h"
 
 namespace cavity::test {
 

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "cavity/core/base/error.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/experiments/measure.h"
 #include "cavity/experiments/suite.h"
 

@@ -9,8 +9,8 @@
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/check/complex_from_tets.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/experiments/greedy_order.h"
 
 namespace cavity::experiments {

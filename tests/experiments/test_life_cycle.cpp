@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/delaunay/triangulate_observed.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/creation.h"
 #include "cavity/experiments/life_cycle.h"

@@ -4,9 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cavity/core/delaunay/triangulate.h"
-#include "cavity/core/delaunay/triangulate_observed.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/memory_model.h"
 #include "cavity/experiments/traced_storage.h"
@@ -108,7 +107,8 @@ TEST(MemoryModel, TracingLeavesTheTriangulationAlone) {
     EndInsertion observer;
     observer.trace = &trace;
     core::detail::WalkLocator locator(options.seed);
-    core::detail::run(prep, options, locator, storage, observer, traced);
+    core::detail::run(prep.geometry, options, locator, storage, observer, traced);
+    core::detail::drain_into(storage, prep.geometry, traced);
     EXPECT_EQ(traced.tets, plain.tets);
     EXPECT_EQ(traced.counters.walk_steps, plain.counters.walk_steps);
     EXPECT_EQ(trace.insertions(), points.size() - 4);

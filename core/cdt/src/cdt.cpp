@@ -27,8 +27,9 @@ std::string edge_list(const Plc& plc, const std::vector<Edge>& edges) {
 
 /// The Delaunay triangulation of the PLC's points, refused when two coincide or a PLC edge is
 /// missing from it (the flip-based construction needs edge protection).
-std::vector<std::array<std::uint32_t, 4>> protected_delaunay(const Plc& plc) {
-    std::vector<std::array<std::uint32_t, 4>> tets = plc_delaunay(plc);
+DelaunayTriangulation protected_delaunay(const Plc& plc) {
+    DelaunayTriangulation dt = plc_delaunay(plc);
+    const std::vector<std::array<std::uint32_t, 4>> tets = dt.tets();
     const std::vector<Edge> missing = unprotected_edges(plc, tets);
     if (!missing.empty()) {
         throw Error(located_message(
@@ -39,7 +40,7 @@ std::vector<std::array<std::uint32_t, 4>> protected_delaunay(const Plc& plc) {
                 " (the flip-based CDT needs edge protection; --protect splits them)"));
     }
     require_valid_plc(plc, tets);
-    return tets;
+    return dt;
 }
 
 }  // namespace
@@ -49,7 +50,8 @@ LiveCdt::LiveCdt(Plc plc, const CdtOptions& options)
                                   : Protection{})
     , plc_(std::move(plc))
     , geometry_(geometry_by_index(plc_.points)) {
-    storage_ = complex_from_tets(protected_delaunay(plc_));
+    // The live triangulation's own complex, renamed to the PLC's point indices: no facet matching.
+    storage_ = protected_delaunay(plc_).release_by_index();
     ConstrainedFaces constrained;
     for (std::size_t f = 0; f < plc_.facets.size(); ++f) {
         for (const auto& g :

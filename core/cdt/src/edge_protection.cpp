@@ -6,23 +6,23 @@
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/plc_validity.h"
-#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/live/delaunay_triangulation.h"
 
 namespace cavity::core {
 
-std::vector<std::array<std::uint32_t, 4>> plc_delaunay(const Plc& plc) {
+DelaunayTriangulation plc_delaunay(const Plc& plc) {
     std::vector<std::uint32_t> sequence(plc.points.size());
     std::iota(sequence.begin(), sequence.end(), 0u);
-    Triangulation dt = triangulate(plc.points, sequence, TriangulateOptions{});
-    if (!dt.duplicates.empty()) {
-        const auto& d = dt.duplicates.front();
+    DelaunayTriangulation dt(plc.points, sequence, TriangulateOptions{});
+    if (!dt.duplicates().empty()) {
+        const auto& d = dt.duplicates().front();
         throw Error(located_message(plc.source,
                                     std::nullopt,
                                     "points " + std::to_string(d[0] + plc.points.index_base) +
                                         " and " + std::to_string(d[1] + plc.points.index_base) +
                                         " coincide"));
     }
-    return std::move(dt.tets);
+    return dt;
 }
 
 void split_plc_edge(Plc& plc, const Edge& e, std::uint32_t m) {
@@ -69,7 +69,7 @@ std::vector<Edge> unprotected_edges(const Plc& plc,
 }
 
 std::vector<Edge> unprotected_edges(const Plc& plc) {
-    return unprotected_edges(plc, plc_delaunay(plc));
+    return unprotected_edges(plc, plc_delaunay(plc).tets());
 }
 
 Protection protect_edges(Plc& plc, std::size_t max_points) {

@@ -5,8 +5,7 @@
 #include <string>
 
 #include "cavity/core/base/error.h"
-#include "cavity/core/delaunay/conflict_counter.h"
-#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/delaunay/insertion_driver.h"
 #include "cavity/core/geometry/bootstrap.h"
 #include "cavity/core/geometry/duplicates.h"
 
@@ -123,20 +122,5 @@ void merge_conflict_tally(const ConflictTally& tally, Counters& counters, bool c
 }
 
 }  // namespace detail
-
-Triangulation triangulate(const PointSet& points,
-                          std::span<const std::uint32_t> sequence,
-                          const TriangulateOptions& options) {
-    if (options.count_conflicts) {
-        ConflictCountingObserver observer;
-        return triangulate_observed(points, sequence, options, observer);
-    }
-    if (options.count) {
-        CountingObserver observer;
-        return triangulate_observed(points, sequence, options, observer);
-    }
-    NullObserver observer;
-    return triangulate_observed(points, sequence, options, observer);
-}
 
 }  // namespace cavity::core

@@ -20,7 +20,9 @@ std::vector<TetId> delete_vertex(ArrayStorage& storage,
                                  RetriangulationCounters* counters) {
     const std::vector<TetId> star = vertex_star(storage, v);
     if (v == kGhostVertex || star.empty()) {
-        throw Error("point " + std::to_string(v) + " is not a vertex of the triangulation");
+        throw Error(v < geometry.size() ? "point " + std::to_string(geometry.key(v)) +
+                                              " is not a vertex of the triangulation"
+                                        : std::string("the ghost vertex cannot be deleted"));
     }
     std::vector<TetVertices> boundary;
     std::vector<VertexId> candidates(submerged.begin(), submerged.end());
@@ -44,7 +46,7 @@ std::vector<TetId> delete_vertex(ArrayStorage& storage,
         gift_wrap_cavity(geometry, boundary, candidates, on_hull, counters);
     std::vector<TetId> ids = replace_tetrahedra(storage, star, fresh);
     if (ids.empty()) {
-        throw Error("deleting point " + std::to_string(v) +
+        throw Error("deleting point " + std::to_string(geometry.key(v)) +
                     ": the gift-wrapped cavity does not match its boundary");
     }
     CAVITY_EXPENSIVE_CHECK(check_complex(storage, geometry), "the complex after a deletion");
@@ -53,82 +55,6 @@ std::vector<TetId> delete_vertex(ArrayStorage& storage,
         counters->tets_deleted += star.size();
     }
     return ids;
-}
-
-Triangulation delete_vertices(const PointSet& points,
-                              const Triangulation& triangulation,
-                              std::span<const std::uint32_t> ids,
-                              RetriangulationCounters* counters) {
-    // Messages number points as the input file does.
-    const auto numbered = [&](std::uint32_t id) {
-        return std::to_string(std::uint64_t{id} + static_cast<std::uint64_t>(points.index_base));
-    };
-    std::vector<bool> gone(points.size(), false);
-    for (std::uint32_t id : ids) {
-        if (id >= points.size()) {
-            throw Error("cannot delete point " + numbered(id) + ": there are only " +
-                        std::to_string(points.size()) + " points");
-        }
-        if (gone[id]) {
-            throw Error("point " + numbered(id) + " is listed twice for deletion");
-        }
-        gone[id] = true;
-    }
-    Triangulation out;
-    for (const auto& d : triangulation.duplicates) {
-        if (!gone[d[0]] && gone[d[1]]) {
-            throw Error("cannot delete point " + numbered(d[1]) + ": point " + numbered(d[0]) +
-                        " repeats it and is kept (delete the repeats too, or keep both)");
-        }
-        if (!gone[d[0]]) {
-            out.duplicates.push_back(d);
-        }
-    }
-    // The remaining points must still span 3D.
-    std::vector<std::uint32_t> remaining;
-    for (std::uint32_t i = 0; i < points.size(); ++i) {
-        if (!gone[i]) {
-            remaining.push_back(i);
-        }
-    }
-    find_bootstrap(points.points, remaining);
-
-    const Geometry geometry = geometry_by_index(points);
-    ArrayStorage storage = complex_from_tets(triangulation.tets);
-    std::vector<VertexId> submerged;
-    for (std::uint32_t r : triangulation.redundant) {
-        if (!gone[r]) {
-            submerged.push_back(r);
-        }
-    }
-    std::vector<bool> is_duplicate(points.size(), false);
-    for (const auto& d : triangulation.duplicates) {
-        is_duplicate[d[0]] = true;
-    }
-    for (std::uint32_t id : ids) {
-        const bool redundant =
-            std::binary_search(triangulation.redundant.begin(), triangulation.redundant.end(), id);
-        if (is_duplicate[id] || redundant) {
-            continue;
-        }
-        const std::vector<TetId> fresh = delete_vertex(storage, geometry, id, submerged, counters);
-        // Submerged points that the deletion uncovered are vertices now.
-        std::erase_if(submerged, [&](VertexId s) {
-            return std::any_of(fresh.begin(), fresh.end(), [&](TetId t) {
-                return slot_of(storage.vertices(t), s) >= 0;
-            });
-        });
-    }
-    out.tets = solid_tets(storage);
-    out.redundant = std::move(submerged);
-    std::sort(out.redundant.begin(), out.redundant.end());
-    for (TetId t = 0; t < storage.capacity(); ++t) {
-        if (storage.alive(t) && is_ghost(storage.vertices(t))) {
-            ++out.hull_triangles;
-        }
-    }
-    out.storage_bytes = storage.bytes();
-    return out;
 }
 
 }  // namespace cavity::core

@@ -11,7 +11,7 @@
 #include "cavity/core/cdt/cdt.h"
 #include "cavity/core/cdt/cdt_validate.h"
 #include "cavity/core/cdt/read_poly.h"
-#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/live/triangulate.h"
 #include "plc_builders.h"
 
 namespace cavity::core {

@@ -14,7 +14,7 @@
 #include "cavity/core/cdt/edge_protection.h"
 #include "cavity/core/cdt/plc_validity.h"
 #include "cavity/core/cdt/read_poly.h"
-#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/live/triangulate.h"
 #include "plc_builders.h"
 // White-box: the region rule is internal to the core.
 #include "../../../core/cdt/src/exact_plane.h"

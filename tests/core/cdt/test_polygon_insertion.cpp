@@ -15,7 +15,7 @@
 #include "cavity/core/cdt/cdt.h"
 #include "cavity/core/cdt/cdt_validate.h"
 #include "cavity/core/check/complex_from_tets.h"
-#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/predicates/orient3d.h"
 #include "plc_builders.h"
 

@@ -8,10 +8,10 @@
 #include "cavity/core/cdt/cdt.h"
 #include "cavity/core/check/complex_from_tets.h"
 #include "cavity/core/check/orientation.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/edit/gift_wrap.h"
-#include "cavity/core/edit/vertex_deletion.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/delaunay_triangulation.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 
 namespace cavity::core {
@@ -78,8 +78,10 @@ TEST(Orientation, EveryApiListHasPositiveVolume) {
     EXPECT_EQ(round_trip, given);
 
     const std::vector<std::uint32_t> gone = {0, 62, 124};
-    const Triangulation after = delete_vertices(points, dt, gone);
-    EXPECT_EQ(count_orientations(points, after.tets).positive, after.tets.size());
+    DelaunayTriangulation live(points, order.sequence, {});
+    live.remove(gone);
+    const std::vector<Tet> after = live.tets();
+    EXPECT_EQ(count_orientations(points, after).positive, after.size());
 
     // A box with a square inside it, a polygon the Delaunay tetrahedra cross.
     Plc box;

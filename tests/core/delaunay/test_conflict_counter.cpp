@@ -10,9 +10,8 @@
 
 #include "cavity/core/delaunay/conflict_counter.h"
 #include "cavity/core/delaunay/point_kd_tree.h"
-#include "cavity/core/delaunay/triangulate.h"
-#include "cavity/core/delaunay/triangulate_observed.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/perturbation/sos.h"
 

@@ -8,7 +8,7 @@
 #include "cavity/core/delaunay/conflict_counter.h"
 #include "cavity/core/delaunay/locator.h"
 #include "cavity/core/delaunay/observer.h"
-#include "cavity/core/delaunay/triangulate_observed.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/mesh/array_storage.h"
 #include "cavity/core/mesh/face_hash_storage.h"
 #include "cavity/core/mesh/tet_storage.h"

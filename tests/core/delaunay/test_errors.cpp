@@ -9,7 +9,7 @@
 
 #include "cavity/core/base/assert.h"
 #include "cavity/core/base/error.h"
-#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/live/triangulate.h"
 
 namespace cavity::test {
 namespace {

@@ -10,9 +10,9 @@
 
 #include "canonical.h"
 #include "cavity/core/check/validate.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/gen/generate.h"
 #include "cavity/core/geometry/bootstrap.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "corpus.h"
 

@@ -7,8 +7,8 @@
 
 #include "canonical.h"
 #include "cavity/core/check/validate.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "corpus.h"
 

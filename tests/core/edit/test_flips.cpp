@@ -9,9 +9,9 @@
 #include "canonical.h"
 #include "cavity/core/base/random.h"
 #include "cavity/core/check/complex_from_tets.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/edit/flips.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/mesh/star.h"
 #include "cavity/predicates/orient3d.h"
 

@@ -9,9 +9,9 @@
 #include "canonical.h"
 #include "cavity/core/base/error.h"
 #include "cavity/core/check/validate.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/edit/gift_wrap.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 
 namespace cavity::core {
 namespace {

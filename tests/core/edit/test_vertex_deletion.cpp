@@ -11,9 +11,9 @@
 #include "cavity/core/base/error.h"
 #include "cavity/core/base/random.h"
 #include "cavity/core/check/complex_from_tets.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/edit/vertex_deletion.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/mesh/star.h"
 
 namespace cavity::core {
@@ -129,48 +129,6 @@ TEST(VertexDeletion, WeightedGridWithEqualWeights) {
     std::size_t resurfaced = 0;
     delete_and_compare(
         generate_points("grid", 125, 2, parse_weight_spec("equal:0.5")), 40, 8, resurfaced);
-}
-
-TEST(VertexDeletion, BatchCallEqualsRebuild) {
-    const PointSet ps = generate_points("grid", 216, 1);
-    const Triangulation full = bowyer_watson(ps);
-    const std::vector<std::uint32_t> ids{0, 7, 215, 100, 43, 36, 180};
-    RetriangulationCounters counters;
-    const Triangulation after = delete_vertices(ps, full, ids, &counters);
-    std::vector<bool> gone(ps.size(), false);
-    for (auto id : ids) {
-        gone[id] = true;
-    }
-    const Triangulation expected = rebuilt_without(ps, gone);
-    EXPECT_EQ(canonical(after.tets), canonical(expected.tets));
-    EXPECT_EQ(after.hull_triangles, expected.hull_triangles);
-    EXPECT_EQ(counters.vertices_deleted, ids.size());
-}
-
-TEST(VertexDeletion, DuplicatesAndBadIds) {
-    PointSet ps = generate_points("cube", 50, 4);
-    ps.points.push_back(ps.points[3]);  // point 50 repeats point 3
-    const Triangulation full = bowyer_watson(ps);
-    const std::vector<std::uint32_t> only_first{3};
-    EXPECT_THROW(delete_vertices(ps, full, only_first), Error);
-    const std::vector<std::uint32_t> both{3, 50};
-    const Triangulation after = delete_vertices(ps, full, both);
-    std::vector<bool> gone(ps.size(), false);
-    gone[3] = gone[50] = true;
-    EXPECT_EQ(canonical(after.tets), canonical(rebuilt_without(ps, gone).tets));
-    EXPECT_TRUE(after.duplicates.empty());
-    const std::vector<std::uint32_t> out_of_range{51};
-    EXPECT_THROW(delete_vertices(ps, full, out_of_range), Error);
-    const std::vector<std::uint32_t> twice{4, 4};
-    EXPECT_THROW(delete_vertices(ps, full, twice), Error);
-}
-
-TEST(VertexDeletion, LeavingACoplanarSetIsAnError) {
-    PointSet ps;
-    ps.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}};
-    const Triangulation full = bowyer_watson(ps);
-    const std::vector<std::uint32_t> apex{4};
-    EXPECT_THROW(delete_vertices(ps, full, apex), Error);
 }
 
 }  // namespace

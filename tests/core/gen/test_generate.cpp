@@ -11,8 +11,8 @@
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/base/random.h"
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/live/triangulate.h"
 
 namespace cavity::core {
 namespace {

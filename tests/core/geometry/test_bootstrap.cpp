@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 
 #include "cavity/core/base/error.h"
-#include "cavity/core/delaunay/triangulate_observed.h"
 #include "cavity/core/gen/generate.h"
 #include "cavity/core/geometry/bootstrap.h"
+#include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 
 namespace cavity::core {

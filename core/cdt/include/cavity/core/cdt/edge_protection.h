@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cavity/core/input/plc.h"
+#include "cavity/core/live/delaunay_triangulation.h"
 
 /// Edge protection (Cheng, Dey & Shewchuk §4.5, §5.8): the flip-based CDT construction needs
 /// every PLC edge to be an edge of the Delaunay triangulation of the PLC's vertices. cavity reads
@@ -24,7 +25,7 @@ std::vector<Edge> unprotected_edges(const Plc& plc,
 /// The Delaunay triangulation of the PLC's points (0-based indices, the perturbation keyed on
 /// them). \throws Error when two points coincide (naming them as the file numbers them) or the
 /// points have no 3D triangulation.
-std::vector<std::array<std::uint32_t, 4>> plc_delaunay(const Plc& plc);
+DelaunayTriangulation plc_delaunay(const Plc& plc);
 
 /// Splits PLC edge e (as {min, max}) at point m, which lies on it: in the explicit segments and in
 /// every loop that has e as a side.

@@ -67,6 +67,15 @@ public:
         storage_.end_operation();
     }
 
+    /// Takes over a triangulation another engine built in the same storage (the live
+    /// triangulation keeps one engine for the insertions after its build): `interior` are four
+    /// affinely independent vertices (the ghost test's reference, see conflicts_ghost),
+    /// `last_solid` a live solid tetrahedron where the next walk starts.
+    void resume(const std::array<VertexId, 4>& interior, TetId last_solid) {
+        bootstrap_ = interior;
+        last_solid_ = last_solid;
+    }
+
     /// True when u conflicts with tetrahedron t (is in its perturbed open circumball, or for a
     /// ghost, in the outer halfspace of its hull triangle).
     bool conflicts(TetId t, VertexId u) {
@@ -87,6 +96,11 @@ public:
         vanished_.clear();
         cavity_faces_.clear();
         step_ = step;
+        if (geometry_.weighted() && deleted_stamp_.size() < geometry_.size()) {
+            // A live triangulation's geometry grows as points are added.
+            deleted_stamp_.resize(geometry_.size(), kNoStamp);
+            created_stamp_.resize(geometry_.size(), kNoStamp);
+        }
         remove(t0);
         for (int f = 0; f < 4; ++f) {
             stack_.push_back(half_facet(t0, f));

@@ -6,7 +6,7 @@
 
 namespace cavity::core {
 
-/// What the insertion loop (triangulate_observed.h) asks of a point locator, for an engine type
+/// What the insertion loop (insertion_driver.h) asks of a point locator, for an engine type
 /// `Engine` (a BowyerWatson): `start` once after the bootstrap; `locate` a tetrahedron from which
 /// the conflict search for vertex u starts (one in conflict with u, or one whose region holds u);
 /// then `after_insertion` when u was inserted, or `skip` when it was not (a redundant weighted

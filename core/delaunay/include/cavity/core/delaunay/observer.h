@@ -14,7 +14,7 @@ namespace cavity::core {
 /// is compiled out and the uninstrumented engine pays nothing. An observer that counts derives
 /// from CountingObserver; the experiments layer adds per-tetrahedron hooks (life-cycle logs) by
 /// overriding the hooks below in a derived class (they are called non-virtually, by name, so the
-/// engine must be instantiated with the derived type: see triangulate_observed.h).
+/// engine must be instantiated with the derived type: see live/triangulate.h).
 struct NullObserver {
     static constexpr bool kCounting = false;
     /// True for ConflictCountingObserver, which fills the conflict fields of Counters.

@@ -82,15 +82,7 @@ struct Triangulation {
     Counters counters;              ///< when TriangulateOptions::count
 };
 
-/// Triangulates `points` inserting them in `sequence` (a permutation of all input indices, e.g.
-/// from make_insertion_order). Exact for every finite double input.
-/// Throws Error, before building anything, for a non-finite coordinate or weight (naming the
-/// point), weights not one per point, or a sequence that is not a permutation; and when the points
-/// have no 3D triangulation (fewer than 4 distinct points, or all coplanar or collinear: the
-/// message names the affine dimension). An exception thrown by `options.progress` propagates
-/// unchanged and leaves nothing behind.
-Triangulation triangulate(const PointSet& points,
-                          std::span<const std::uint32_t> sequence,
-                          const TriangulateOptions& options);
+/// triangulate() itself is in live/triangulate.h: with the array storage it builds the live
+/// triangulation and releases it.
 
 }  // namespace cavity::core

@@ -3,7 +3,6 @@
 #include <cstdint>
 #include <span>
 
-#include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/edit/retriangulation_counters.h"
 #include "cavity/core/geometry/geometry.h"
 #include "cavity/core/mesh/array_storage.h"
@@ -18,26 +17,14 @@
 /// hull become vertices.
 namespace cavity::core {
 
-/// Deletes vertex v from a live complex with ghosts (e.g. from complex_from_tets; vertex ids index
-/// `geometry`). `submerged` lists weighted points that are not vertices (may be empty). Returns the
-/// ids of the new tetrahedra. \throws Error when v is not a vertex or the cavity cannot be filled
-/// (the storage is then unchanged).
+/// Deletes vertex v from a live complex with ghosts (the live triangulation's, or one from
+/// complex_from_tets; vertex ids index `geometry`). `submerged` lists weighted points that are not
+/// vertices (may be empty). Returns the ids of the new tetrahedra. \throws Error when v is not a
+/// vertex or the cavity cannot be filled (the storage is then unchanged).
 std::vector<TetId> delete_vertex(ArrayStorage& storage,
                                  const Geometry& geometry,
                                  VertexId v,
                                  std::span<const VertexId> submerged,
                                  RetriangulationCounters* counters);
-
-/// The triangulation of `points` without the points `ids` (0-based input indices), from
-/// `triangulation` (the triangulation of all of `points`, e.g. from triangulate()), deleting the
-/// points one by one. Deleting a duplicate or redundant point only updates those lists. Equal to
-/// triangulate() of the remaining points, in the original indices.
-/// \throws Error for an index out of range or repeated, for a vertex whose exact duplicate is
-/// kept (its copy would need inserting, not deleting: delete the copies too), and when the
-/// remaining points have no 3D triangulation.
-Triangulation delete_vertices(const PointSet& points,
-                              const Triangulation& triangulation,
-                              std::span<const std::uint32_t> ids,
-                              RetriangulationCounters* counters = nullptr);
 
 }  // namespace cavity::core

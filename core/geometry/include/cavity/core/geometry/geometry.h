@@ -43,6 +43,17 @@ public:
         return static_cast<VertexId>(points_.size() - 1);
     }
 
+    /// Appends a point with perturbation key `key` (an input index no other point has) and, when
+    /// the geometry is weighted, weight `weight`. Returns its vertex id.
+    VertexId append(const Point3& p, std::uint32_t key, double weight) {
+        points_.push_back(p);
+        keys_.push_back(key);
+        if (weighted()) {
+            weights_.push_back(weight);
+        }
+        return static_cast<VertexId>(points_.size() - 1);
+    }
+
     WeightedPoint3 weighted_point(VertexId v) const {
         const Point3& p = points_[v];
         return {p.x, p.y, p.z, weights_[v]};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "cavity/core/base/page_releaser.h"
@@ -78,6 +79,27 @@ public:
         free_ = PodStack<TetId>();
         std::vector<TetId>().swap(vertex_tet_);
         live_ = 0;
+    }
+
+    /// Renames every vertex v to rename[v] (the ghost vertex stays), with Adjacent2Vertex
+    /// following: a relabelling, so orientation and adjacency are unchanged.
+    void rename_vertices(std::span<const VertexId> rename) {
+        for (Record& r : records_) {
+            for (VertexId& v : r.v) {
+                if (v != kGhostVertex) {
+                    v = rename[v];
+                }
+            }
+        }
+        std::vector<TetId> moved;
+        for (std::size_t v = 0; v < vertex_tet_.size() && v < rename.size(); ++v) {
+            const VertexId to = rename[v];
+            if (to >= moved.size()) {
+                moved.resize(std::max<std::size_t>(to + 1, rename.size()), kNoTet);
+            }
+            moved[to] = vertex_tet_[v];
+        }
+        vertex_tet_ = std::move(moved);
     }
 
     std::size_t bytes() const {

@@ -8,6 +8,7 @@
 #include "cavity/core/base/assert.h"
 #include "cavity/core/base/error.h"
 #include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/delaunay/conflict_counter.h"
 #include "cavity/core/delaunay/conflict_graph.h"
 #include "cavity/core/delaunay/full_conflict_graph.h"
 #include "cavity/core/delaunay/locator.h"
@@ -18,9 +19,10 @@
 #include "cavity/core/mesh/array_storage.h"
 #include "cavity/core/mesh/face_hash_storage.h"
 
-/// triangulate() with an observer of the caller's type: the engine is instantiated for it, so its
-/// hooks (observer.h) are called directly and cost nothing when empty. The experiments layer uses
-/// this to log every tetrahedron's life.
+/// The driver loop of Bowyer–Watson (§5.2–5.5): the input checked and laid out in insertion
+/// order, the bootstrap tetrahedron, then every point located and inserted, for any storage,
+/// locator and observer. The live triangulation (live/delaunay_triangulation.h) and the batch
+/// triangulate() (live/triangulate.h) are both this loop and what they do with the storage after.
 namespace cavity::core {
 
 namespace detail {
@@ -46,16 +48,24 @@ Prepared prepare(const PointSet& input,
 /// unit. \throws InternalError when they do not.
 void merge_conflict_tally(const ConflictTally& tally, Counters& counters, bool counted);
 
+/// Where a run left the engine, for an engine that continues in the same storage.
+struct RunEnd {
+    std::array<VertexId, 4> interior;  ///< the bootstrap vertices
+    TetId last_solid;
+};
+
+/// Inserts the prepared points (`geometry`, Prepared::geometry) (the first options.prefix, when
+/// set) into the empty `storage`. Fills out.redundant and, when Observer::kCounting, out.counters;
+/// the tetrahedra stay in the storage.
 template <class Storage, class Observer, class PointLocator>
-void run(const Prepared& prep,
-         const TriangulateOptions& options,
-         PointLocator& locator,
-         Storage& storage,
-         Observer& observer,
-         Triangulation& out) {
+RunEnd run(const Geometry& geometry,
+           const TriangulateOptions& options,
+           PointLocator& locator,
+           Storage& storage,
+           Observer& observer,
+           Triangulation& out) {
     static_assert(Locator<PointLocator, BowyerWatson<Storage, Observer>>,
                   "the locator must model Locator (delaunay/locator.h)");
-    const Geometry& geometry = prep.geometry;
     const std::size_t n = geometry.size();
     // A prefix run inserts the first `last` points; the others are only counted as conflicts.
     const std::size_t last =
@@ -115,17 +125,6 @@ void run(const Prepared& prep,
     }
     std::sort(out.redundant.begin(), out.redundant.end());
     observer.on_finish();
-    out.storage_bytes = storage.bytes();
-    out.tets.reserve(storage.live_count());
-    storage.drain([&](const TetVertices& v) {
-        if (is_ghost(v)) {
-            ++out.hull_triangles;
-        } else {
-            // The stored orientation mirrored: the API hands out positive right-hand volume.
-            out.tets.push_back(
-                {geometry.key(v[1]), geometry.key(v[0]), geometry.key(v[2]), geometry.key(v[3])});
-        }
-    });
     if constexpr (Observer::kCounting) {
         out.counters = *observer.counters();
         out.counters.duplicates = out.duplicates.size();
@@ -140,6 +139,25 @@ void run(const Prepared& prep,
     if (options.progress) {
         options.progress(n, n);
     }
+    return {engine.bootstrap_vertices(), engine.last_solid()};
+}
+
+/// Moves the tetrahedra out of `storage` into out.tets (solid ones, input indices, positive
+/// right-hand volume) and counts the hull triangles, emptying the storage as it goes so that the
+/// copy does not double the peak memory.
+template <class Storage>
+void drain_into(Storage& storage, const Geometry& geometry, Triangulation& out) {
+    out.storage_bytes = storage.bytes();
+    out.tets.reserve(storage.live_count());
+    storage.drain([&](const TetVertices& v) {
+        if (is_ghost(v)) {
+            ++out.hull_triangles;
+        } else {
+            // The stored orientation mirrored: the API hands out positive right-hand volume.
+            out.tets.push_back(
+                {geometry.key(v[1]), geometry.key(v[0]), geometry.key(v[2]), geometry.key(v[3])});
+        }
+    });
 }
 
 /// Point location by a walk from the most recently created solid tetrahedron (§5.5): `Walker` is
@@ -170,52 +188,49 @@ private:
 using WalkLocator = WalkingLocator<Walk>;
 using StraightWalkLocator = WalkingLocator<StraightWalk>;
 
+/// run() with the locator options.locate names.
 template <class Storage, class Observer>
-void dispatch_locator(const Prepared& prep,
-                      const TriangulateOptions& options,
-                      Observer& observer,
-                      Triangulation& out) {
-    Storage storage;
-    if (options.locate == LocateKind::kWalk) {
-        WalkLocator locator(options.seed);
-        run(prep, options, locator, storage, observer, out);
-    } else if (options.locate == LocateKind::kStraightWalk) {
-        StraightWalkLocator locator(options.seed);
-        run(prep, options, locator, storage, observer, out);
-    } else if (options.locate == LocateKind::kFullConflictGraph) {
-        FullConflictGraph locator(options.seed);
-        run(prep, options, locator, storage, observer, out);
-    } else {
-        ConflictGraph locator;
-        run(prep, options, locator, storage, observer, out);
+RunEnd run_located(const Geometry& geometry,
+                   const TriangulateOptions& options,
+                   Storage& storage,
+                   Observer& observer,
+                   Triangulation& out) {
+    switch (options.locate) {
+        case LocateKind::kWalk: {
+            WalkLocator locator(options.seed);
+            return run(geometry, options, locator, storage, observer, out);
+        }
+        case LocateKind::kStraightWalk: {
+            StraightWalkLocator locator(options.seed);
+            return run(geometry, options, locator, storage, observer, out);
+        }
+        case LocateKind::kFullConflictGraph: {
+            FullConflictGraph locator(options.seed);
+            return run(geometry, options, locator, storage, observer, out);
+        }
+        case LocateKind::kConflictGraph:
+            break;
     }
+    ConflictGraph locator;
+    return run(geometry, options, locator, storage, observer, out);
 }
 
-template <class Observer>
-void dispatch_storage(const Prepared& prep,
-                      const TriangulateOptions& options,
-                      Observer& observer,
-                      Triangulation& out) {
-    if (options.storage == StorageKind::kArray) {
-        dispatch_locator<ArrayStorage>(prep, options, observer, out);
+/// Calls `build(observer)` with the observer the options ask for: ConflictCountingObserver
+/// (count_conflicts), CountingObserver (count) or NullObserver.
+template <class Build>
+void with_observer(const TriangulateOptions& options, Build&& build) {
+    if (options.count_conflicts) {
+        ConflictCountingObserver observer;
+        build(observer);
+    } else if (options.count) {
+        CountingObserver observer;
+        build(observer);
     } else {
-        dispatch_locator<FaceHashStorage>(prep, options, observer, out);
+        NullObserver observer;
+        build(observer);
     }
 }
 
 }  // namespace detail
-
-/// As triangulate(), reporting to `observer` (a NullObserver or CountingObserver, or a type
-/// derived from one). Triangulation::counters is filled when Observer::kCounting.
-template <class Observer>
-Triangulation triangulate_observed(const PointSet& points,
-                                   std::span<const std::uint32_t> sequence,
-                                   const TriangulateOptions& options,
-                                   Observer& observer) {
-    Triangulation out;
-    const detail::Prepared prep = detail::prepare(points, sequence, options.bootstrap, out);
-    detail::dispatch_storage(prep, options, observer, out);
-    return out;
-}
 
 }  // namespace cavity::core

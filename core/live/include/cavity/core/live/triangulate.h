@@ -1,0 +1,48 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "cavity/core/delaunay/insertion_driver.h"
+#include "cavity/core/delaunay/triangulate.h"
+#include "cavity/core/live/delaunay_triangulation.h"
+#include "cavity/core/mesh/face_hash_storage.h"
+
+/// The batch entry point: a triangulation built and handed out as a list of tetrahedra. With the
+/// array storage it is the live triangulation built and released (release() empties the storage
+/// as it copies, so the list costs no second copy at the peak); the book's face hash table, which
+/// cannot be kept live for flips and deletion, runs the same driver loop directly.
+namespace cavity::core {
+
+/// Triangulates `points` inserting them in `sequence` (a permutation of all input indices, e.g.
+/// from make_insertion_order). Exact for every finite double input.
+/// Throws Error, before building anything, for a non-finite coordinate or weight (naming the
+/// point), weights not one per point, or a sequence that is not a permutation; and when the points
+/// have no 3D triangulation (fewer than 4 distinct points, or all coplanar or collinear: the
+/// message names the affine dimension). An exception thrown by `options.progress` propagates
+/// unchanged and leaves nothing behind.
+Triangulation triangulate(const PointSet& points,
+                          std::span<const std::uint32_t> sequence,
+                          const TriangulateOptions& options);
+
+/// As triangulate(), reporting to `observer` (a NullObserver or CountingObserver, or a type
+/// derived from one): the engine is instantiated for it, so its hooks (observer.h) are called
+/// directly and cost nothing when empty. Triangulation::counters is filled when
+/// Observer::kCounting. The experiments layer uses this to log every tetrahedron's life.
+template <class Observer>
+Triangulation triangulate_observed(const PointSet& points,
+                                   std::span<const std::uint32_t> sequence,
+                                   const TriangulateOptions& options,
+                                   Observer& observer) {
+    if (options.storage == StorageKind::kArray) {
+        return DelaunayTriangulation(points, sequence, options, observer).release();
+    }
+    Triangulation out;
+    const detail::Prepared prep = detail::prepare(points, sequence, options.bootstrap, out);
+    FaceHashStorage storage;
+    detail::run_located(prep.geometry, options, storage, observer, out);
+    detail::drain_into(storage, prep.geometry, out);
+    return out;
+}
+
+}  // namespace cavity::core

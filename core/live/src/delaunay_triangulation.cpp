@@ -1,0 +1,450 @@
+#include "cavity/core/live/delaunay_triangulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "cavity/core/base/assert.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/check/validate.h"
+#include "cavity/core/delaunay/seek_conflict.h"
+#include "cavity/core/edit/flips.h"
+#include "cavity/core/edit/vertex_deletion.h"
+#include "cavity/core/geometry/bootstrap.h"
+#include "cavity/core/mesh/star.h"
+
+namespace cavity::core {
+
+namespace {
+
+/// API slot i of a tetrahedron is storage slot kMirror[i]: the API lists the stored (orient3d
+/// > 0) order with its first two vertices swapped (handedness.h). The map is its own inverse.
+constexpr std::array<int, 4> kMirror{1, 0, 2, 3};
+
+std::array<std::uint32_t, 4> api_tet(const Geometry& geometry, const TetVertices& v) {
+    return {geometry.key(v[1]), geometry.key(v[0]), geometry.key(v[2]), geometry.key(v[3])};
+}
+
+}  // namespace
+
+DelaunayTriangulation::State::State(Geometry points, const PointSet& input, std::uint64_t seed)
+    : geometry(std::move(points))
+    , walk(seed)
+    , next_key(static_cast<std::uint32_t>(input.size()))
+    , index_base(input.index_base)
+    , removed(input.size(), false) {}
+
+DelaunayTriangulation::DelaunayTriangulation(const PointSet& points,
+                                             std::span<const std::uint32_t> sequence,
+                                             const TriangulateOptions& options) {
+    detail::with_observer(options, [&](auto& observer) {
+        *this = DelaunayTriangulation(points, sequence, options, observer);
+    });
+}
+
+DelaunayTriangulation::DelaunayTriangulation(DelaunayTriangulation&&) noexcept = default;
+DelaunayTriangulation& DelaunayTriangulation::operator=(DelaunayTriangulation&&) noexcept = default;
+DelaunayTriangulation::~DelaunayTriangulation() = default;
+
+void DelaunayTriangulation::require_array(const TriangulateOptions& options) {
+    if (options.storage != StorageKind::kArray) {
+        throw Error(
+            "the live triangulation keeps the array storage (the hash storage is for "
+            "triangulate())");
+    }
+}
+
+void DelaunayTriangulation::adopt(const detail::RunEnd& end, Triangulation& built) {
+    State& s = *state_;
+    s.interior = end.interior;
+    s.last_solid = end.last_solid;
+    s.duplicates = std::move(built.duplicates);
+    s.counters = built.counters;
+    if (built.redundant.empty()) {
+        return;
+    }
+    // built.redundant holds input indices; the engine's vertex ids are ranks.
+    std::vector<VertexId> rank_of(s.next_key, kNoVertex);
+    for (VertexId v = 0; v < s.geometry.size(); ++v) {
+        rank_of[s.geometry.key(v)] = v;
+    }
+    for (std::uint32_t key : built.redundant) {
+        s.submerged.push_back(rank_of[key]);
+    }
+}
+
+std::size_t DelaunayTriangulation::point_count() const {
+    return state_->next_key;
+}
+
+std::size_t DelaunayTriangulation::tet_count() const {
+    return state_->storage.live_count() - hull_triangle_count();
+}
+
+std::size_t DelaunayTriangulation::hull_triangle_count() const {
+    const ArrayStorage& storage = state_->storage;
+    std::size_t ghosts = 0;
+    for (TetId t = 0; t < storage.capacity(); ++t) {
+        ghosts += storage.alive(t) && is_ghost(storage.vertices(t)) ? 1 : 0;
+    }
+    return ghosts;
+}
+
+bool DelaunayTriangulation::weighted() const {
+    return state_->geometry.weighted();
+}
+
+BowyerWatson<ArrayStorage, NullObserver>& DelaunayTriangulation::engine(State& s) {
+    if (!s.engine) {
+        s.engine.emplace(s.geometry, s.storage, s.observer);
+        s.engine->resume(s.interior, s.last_solid);
+    }
+    return *s.engine;
+}
+
+TetId DelaunayTriangulation::start_tet() const {
+    const State& s = *state_;
+    const TetId hint = s.engine ? s.engine->last_solid() : s.last_solid;
+    if (hint != kNoTet && s.storage.alive(hint) && !is_ghost(s.storage.vertices(hint))) {
+        return hint;
+    }
+    // Flips may have deleted it; any live solid tetrahedron will do.
+    for (TetId t = 0; t < s.storage.capacity(); ++t) {
+        if (s.storage.alive(t) && !is_ghost(s.storage.vertices(t))) {
+            return t;
+        }
+    }
+    throw InternalError("internal error: the live triangulation has no solid tetrahedron");
+}
+
+std::vector<bool> DelaunayTriangulation::vertex_flags() const {
+    const State& s = *state_;
+    std::vector<bool> flags(s.geometry.size(), false);
+    for (TetId t = 0; t < s.storage.capacity(); ++t) {
+        if (s.storage.alive(t)) {
+            for (VertexId v : s.storage.vertices(t)) {
+                if (v != kGhostVertex) {
+                    flags[v] = true;
+                }
+            }
+        }
+    }
+    return flags;
+}
+
+std::uint32_t DelaunayTriangulation::insert(const Point3& p, double weight) {
+    State& s = *state_;
+    const std::uint32_t key = s.next_key;
+    const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) &&
+                        (!weighted() || std::isfinite(weight));
+    if (!finite) {
+        throw Error("point " + std::to_string(std::int64_t{key} + s.index_base) +
+                    " has a non-finite coordinate or weight");
+    }
+    BowyerWatson<ArrayStorage, NullObserver>& bw = engine(s);
+    const TetId start = start_tet();
+    const VertexId u = s.geometry.append(p, key, weight);
+    ++s.next_key;
+    s.removed.push_back(false);
+    if (!s.vertex_of.empty()) {
+        s.vertex_of.push_back(u);
+    }
+    const TetId located = s.walk.locate(bw, p, start);
+    const ConflictSeed seed = seek_conflict(bw, u, located, s.scratch);
+    if (seed.duplicate != kNoVertex) {
+        s.duplicates.push_back({key, s.geometry.key(seed.duplicate)});
+        if (!s.vertex_of.empty()) {
+            s.vertex_of.back() = kNoVertex;
+        }
+    } else if (seed.tet == kNoTet) {
+        s.submerged.push_back(u);
+    } else {
+        bw.insert_vertex(u, seed.tet, u);
+        s.submerged.insert(s.submerged.end(), bw.vanished().begin(), bw.vanished().end());
+        if ((u & (u - 1)) == 0) {
+            CAVITY_EXPENSIVE_CHECK(
+                check_complex(s.storage, s.geometry),
+                "the live triangulation after inserting point " + std::to_string(key));
+        }
+    }
+    return key;
+}
+
+TetId DelaunayTriangulation::locate(const Point3& p) const {
+    return state_->walk.locate(engine(*state_), p, start_tet());
+}
+
+void DelaunayTriangulation::remove(std::span<const std::uint32_t> ids,
+                                   RetriangulationCounters* counters) {
+    State& s = *state_;
+    const auto numbered = [&](std::uint32_t id) {
+        return std::to_string(std::int64_t{id} + s.index_base);
+    };
+    if (s.vertex_of.empty()) {
+        s.vertex_of.assign(s.next_key, kNoVertex);
+        for (VertexId v = 0; v < s.geometry.size(); ++v) {
+            s.vertex_of[s.geometry.key(v)] = v;
+        }
+    }
+    std::vector<bool> is_duplicate(s.next_key, false);
+    for (const auto& d : s.duplicates) {
+        is_duplicate[d[0]] = true;
+    }
+    std::vector<bool> is_submerged(s.geometry.size(), false);
+    for (VertexId v : s.submerged) {
+        is_submerged[v] = true;
+    }
+    const std::vector<bool> is_vertex = vertex_flags();
+    std::vector<bool> gone(s.next_key, false);
+    for (std::uint32_t id : ids) {
+        if (id >= s.next_key) {
+            throw Error("cannot delete point " + numbered(id) + ": there are only " +
+                        std::to_string(s.next_key) + " points");
+        }
+        if (gone[id]) {
+            throw Error("point " + numbered(id) + " is listed twice for deletion");
+        }
+        if (s.removed[id]) {
+            throw Error("point " + numbered(id) + " has been deleted already");
+        }
+        const VertexId v = s.vertex_of[id];
+        if (!is_duplicate[id] && !is_submerged[v] && !is_vertex[v]) {
+            throw Error("cannot delete point " + numbered(id) + ": it was never inserted");
+        }
+        gone[id] = true;
+    }
+    for (const auto& d : s.duplicates) {
+        if (!gone[d[0]] && gone[d[1]]) {
+            throw Error("cannot delete point " + numbered(d[1]) + ": point " + numbered(d[0]) +
+                        " repeats it and is kept (delete the repeats too, or keep both)");
+        }
+    }
+    // The remaining vertices and submerged points must still span 3D.
+    std::vector<Point3> remaining;
+    for (VertexId v = 0; v < s.geometry.size(); ++v) {
+        const std::uint32_t key = s.geometry.key(v);
+        if (!gone[key] && !s.removed[key] && (is_submerged[v] || is_vertex[v])) {
+            remaining.push_back(s.geometry.point(v));
+        }
+    }
+    std::vector<std::uint32_t> all(remaining.size());
+    for (std::uint32_t i = 0; i < all.size(); ++i) {
+        all[i] = i;
+    }
+    find_bootstrap(remaining, all);
+
+    for (std::uint32_t id : ids) {
+        s.removed[id] = true;
+        const VertexId v = s.vertex_of[id];
+        if (is_duplicate[id]) {
+            std::erase_if(s.duplicates, [&](const auto& d) { return d[0] == id; });
+            continue;
+        }
+        // Not the flags: an earlier deletion of this call may have uncovered v.
+        if (std::find(s.submerged.begin(), s.submerged.end(), v) != s.submerged.end()) {
+            std::erase(s.submerged, v);
+            continue;
+        }
+        const std::vector<TetId> fresh =
+            delete_vertex(s.storage, s.geometry, v, s.submerged, counters);
+        // Submerged points that the deletion uncovered are vertices now.
+        std::erase_if(s.submerged, [&](VertexId w) {
+            return std::any_of(fresh.begin(), fresh.end(), [&](TetId t) {
+                return slot_of(s.storage.vertices(t), w) >= 0;
+            });
+        });
+    }
+    restart_after_edit();
+}
+
+void DelaunayTriangulation::restart_after_edit() {
+    // The bootstrap vertices may be gone: any solid tetrahedron's four vertices are affinely
+    // independent, which is all the ghost test asks of its reference.
+    State& s = *state_;
+    s.last_solid = kNoTet;
+    s.last_solid = start_tet();
+    s.interior = s.storage.vertices(s.last_solid);
+    if (s.engine) {
+        s.engine->resume(s.interior, s.last_solid);
+    }
+}
+
+std::vector<TetId> DelaunayTriangulation::flip23(HalfFacet h, RetriangulationCounters* counters) {
+    std::vector<TetId> fresh = core::flip23(state_->storage, state_->geometry, h, counters);
+    if (!fresh.empty()) {
+        restart_after_edit();
+    }
+    return fresh;
+}
+
+std::vector<TetId> DelaunayTriangulation::flip32(TetId t,
+                                                 int i,
+                                                 int j,
+                                                 RetriangulationCounters* counters) {
+    std::vector<TetId> fresh = core::flip32(state_->storage, state_->geometry, t, i, j, counters);
+    if (!fresh.empty()) {
+        restart_after_edit();
+    }
+    return fresh;
+}
+
+std::vector<std::string> DelaunayTriangulation::check(CheckLevel level) const {
+    const State& s = *state_;
+    std::vector<std::string> problems = check_complex(s.storage, s.geometry);
+    if (level == CheckLevel::kComplex || !problems.empty()) {
+        return problems;
+    }
+    // The validator reads points by input index; points never inserted (a prefix build) and
+    // removed ones are declared absent.
+    PointSet by_key;
+    by_key.index_base = s.index_base;
+    by_key.points.assign(s.next_key, Point3{});
+    if (weighted()) {
+        by_key.weights.assign(s.next_key, 0.0);
+    }
+    std::vector<bool> present(s.next_key, false);
+    std::vector<bool> is_present = vertex_flags();
+    for (VertexId v : s.submerged) {
+        is_present[v] = true;
+    }
+    for (VertexId v = 0; v < s.geometry.size(); ++v) {
+        const std::uint32_t key = s.geometry.key(v);
+        by_key.points[key] = s.geometry.point(v);
+        if (weighted()) {
+            by_key.weights[key] = s.geometry.weighted_point(v).w;
+        }
+        present[key] = !s.removed[key] && is_present[v];
+    }
+    for (const auto& d : s.duplicates) {
+        by_key.points[d[0]] = by_key.points[d[1]];
+        if (weighted()) {
+            by_key.weights[d[0]] = by_key.weights[d[1]];
+        }
+        present[d[0]] = !s.removed[d[0]];
+    }
+    std::vector<std::uint32_t> absent;
+    for (std::uint32_t key = 0; key < s.next_key; ++key) {
+        if (!present[key]) {
+            absent.push_back(key);
+        }
+    }
+    const std::vector<std::array<std::uint32_t, 4>> solid = tets();
+    ValidationReport report = validate(by_key, solid, absent);
+    return std::move(report.problems);
+}
+
+std::vector<std::array<std::uint32_t, 4>> DelaunayTriangulation::tets() const {
+    const State& s = *state_;
+    std::vector<std::array<std::uint32_t, 4>> out;
+    out.reserve(s.storage.live_count());
+    for (TetId t = 0; t < s.storage.capacity(); ++t) {
+        if (s.storage.alive(t) && !is_ghost(s.storage.vertices(t))) {
+            out.push_back(api_tet(s.geometry, s.storage.vertices(t)));
+        }
+    }
+    return out;
+}
+
+Adjacency DelaunayTriangulation::adjacency() const {
+    const State& s = *state_;
+    const ArrayStorage& storage = s.storage;
+    const std::size_t slots = storage.capacity();
+    // Counting sort of the solid tetrahedra by their lowest vertex id (insertion rank).
+    std::vector<std::uint32_t> begin(s.geometry.size() + 1, 0);
+    const auto lowest = [&](const TetVertices& v) {
+        return std::min(std::min(v[0], v[1]), std::min(v[2], v[3]));
+    };
+    for (TetId t = 0; t < slots; ++t) {
+        if (storage.alive(t) && !is_ghost(storage.vertices(t))) {
+            ++begin[lowest(storage.vertices(t)) + 1];
+        }
+    }
+    for (std::size_t v = 1; v < begin.size(); ++v) {
+        begin[v] += begin[v - 1];
+    }
+    const std::size_t m = begin.back();
+    std::vector<std::int32_t> index(slots, -1);
+    std::vector<TetId> by_rank(m);
+    for (TetId t = 0; t < slots; ++t) {
+        if (storage.alive(t) && !is_ghost(storage.vertices(t))) {
+            const std::uint32_t o = begin[lowest(storage.vertices(t))]++;
+            index[t] = static_cast<std::int32_t>(o);
+            by_rank[o] = t;
+        }
+    }
+    Adjacency out;
+    out.simplices.resize(m);
+    out.neighbors.assign(4 * m, -1);
+    out.vertex_to_simplex.assign(s.next_key, -1);
+    for (std::size_t o = 0; o < m; ++o) {
+        const TetId t = by_rank[o];
+        const Tet tet = api_tet(s.geometry, storage.vertices(t));
+        out.simplices[o] = tet;
+        for (std::size_t i = 0; i < 4; ++i) {
+            out.vertex_to_simplex[tet[i]] = static_cast<std::int32_t>(o);
+            const HalfFacet across = storage.adjacent(t, kMirror[i]);
+            const std::int32_t neighbour = index[tet_of(across)];
+            out.neighbors[4 * o + i] = neighbour;
+            if (neighbour >= 0) {
+                continue;
+            }
+            // As build_adjacency lists it: facet i of the positive-volume tetrahedron is clockwise
+            // seen from outside, so reversed it is counter-clockwise.
+            const auto& f = kFacetVertices[i];
+            out.hull.push_back({static_cast<std::int32_t>(tet[static_cast<std::size_t>(f[0])]),
+                                static_cast<std::int32_t>(tet[static_cast<std::size_t>(f[2])]),
+                                static_cast<std::int32_t>(tet[static_cast<std::size_t>(f[1])])});
+        }
+    }
+    return out;
+}
+
+const std::vector<std::array<std::uint32_t, 2>>& DelaunayTriangulation::duplicates() const {
+    return state_->duplicates;
+}
+
+std::vector<std::uint32_t> DelaunayTriangulation::redundant() const {
+    std::vector<std::uint32_t> keys;
+    for (VertexId v : state_->submerged) {
+        keys.push_back(state_->geometry.key(v));
+    }
+    std::sort(keys.begin(), keys.end());
+    return keys;
+}
+
+const Counters& DelaunayTriangulation::counters() const {
+    return state_->counters;
+}
+
+const Geometry& DelaunayTriangulation::geometry() const {
+    return state_->geometry;
+}
+
+const ArrayStorage& DelaunayTriangulation::storage() const {
+    return state_->storage;
+}
+
+Triangulation DelaunayTriangulation::release() && {
+    Triangulation out;
+    out.duplicates = std::move(state_->duplicates);
+    out.redundant = redundant();
+    out.counters = state_->counters;
+    detail::drain_into(state_->storage, state_->geometry, out);
+    state_.reset();
+    return out;
+}
+
+ArrayStorage DelaunayTriangulation::release_by_index() && {
+    State& s = *state_;
+    std::vector<VertexId> rename(s.geometry.size());
+    for (VertexId v = 0; v < rename.size(); ++v) {
+        rename[v] = s.geometry.key(v);
+    }
+    s.storage.rename_vertices(rename);
+    ArrayStorage out = std::move(s.storage);
+    state_.reset();
+    return out;
+}
+
+}  // namespace cavity::core

@@ -1,0 +1,318 @@
+// The live triangulation: built as triangulate() builds, it stays equal to the triangulation
+// rebuilt from scratch through insertions, deletions and flips, and its views equal the ones
+// derived from the bare list of tetrahedra.
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "canonical.h"
+#include "cavity/core/base/error.h"
+#include "cavity/core/base/random.h"
+#include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/gen/generate.h"
+#include "cavity/core/io/tet_adjacency.h"
+#include "cavity/core/live/delaunay_triangulation.h"
+#include "cavity/core/live/triangulate.h"
+#include "cavity/core/order/insertion_order.h"
+
+namespace cavity::core {
+namespace {
+
+using Tets = std::vector<std::array<std::uint32_t, 4>>;
+using test::canonical;
+
+std::vector<std::uint32_t> identity(std::size_t n) {
+    std::vector<std::uint32_t> sequence(n);
+    std::iota(sequence.begin(), sequence.end(), 0u);
+    return sequence;
+}
+
+DelaunayTriangulation live_in_input_order(const PointSet& ps) {
+    return DelaunayTriangulation(ps, identity(ps.size()), TriangulateOptions{});
+}
+
+/// The first `count` points of ps (with their weights).
+PointSet head(const PointSet& ps, std::size_t count) {
+    PointSet out;
+    out.points.assign(ps.points.begin(), ps.points.begin() + static_cast<std::ptrdiff_t>(count));
+    if (ps.weighted()) {
+        out.weights.assign(ps.weights.begin(),
+                           ps.weights.begin() + static_cast<std::ptrdiff_t>(count));
+    }
+    return out;
+}
+
+/// Bowyer-Watson on the points not gone, in the original indices: dropping points keeps the
+/// relative order of the others' keys, so the perturbation decides the same way.
+Tets rebuilt_without(const PointSet& ps, const std::vector<bool>& gone) {
+    PointSet kept;
+    std::vector<std::uint32_t> original;
+    for (std::uint32_t i = 0; i < ps.size(); ++i) {
+        if (!gone[i]) {
+            original.push_back(i);
+            kept.points.push_back(ps.points[i]);
+            if (ps.weighted()) {
+                kept.weights.push_back(ps.weights[i]);
+            }
+        }
+    }
+    Tets tets = test::triangulate_in_input_order(kept).tets;
+    for (auto& tet : tets) {
+        for (auto& v : tet) {
+            v = original[v];
+        }
+    }
+    return tets;
+}
+
+TEST(DelaunayTriangulation, ReleaseEqualsTriangulateForEveryLocator) {
+    const PointSet ps = generate_points("ball", 2000, 3);
+    OrderOptions order_options;
+    order_options.kind = OrderKind::kBrio;
+    order_options.seed = 5;
+    const InsertionOrder order = make_insertion_order(ps.points, order_options);
+    for (const auto& locate : kLocateKinds) {
+        TriangulateOptions options;
+        options.locate = locate.kind;
+        options.count = true;
+        DelaunayTriangulation dt(ps, order.sequence, options);
+        EXPECT_TRUE(dt.check(CheckLevel::kDelaunay).empty()) << locate.name;
+        EXPECT_EQ(dt.tet_count() + dt.hull_triangle_count(), dt.storage().live_count());
+        const Counters counters = dt.counters();
+        const Triangulation released = std::move(dt).release();
+        const Triangulation batch = triangulate(ps, order.sequence, options);
+        EXPECT_EQ(released.tets, batch.tets) << locate.name;
+        EXPECT_EQ(released.hull_triangles, batch.hull_triangles);
+        EXPECT_EQ(counters.tets_created, batch.counters.tets_created);
+        EXPECT_GT(counters.tets_created, 0u);
+    }
+}
+
+TEST(DelaunayTriangulation, HashStorageIsForTheBatchFunction) {
+    const PointSet ps = generate_points("cube", 50, 1);
+    TriangulateOptions options;
+    options.storage = StorageKind::kHash;
+    EXPECT_THROW(DelaunayTriangulation(ps, identity(ps.size()), options), Error);
+}
+
+/// The adjacency read off the live complex equals the one matched from the list of tetrahedra:
+/// the same simplices, the same neighbour across every facet, the same oriented hull triangles.
+TEST(DelaunayTriangulation, AdjacencyEqualsTheMatchedOne) {
+    for (const char* dist : {"cube", "grid", "sphere"}) {
+        const PointSet ps = generate_points(dist, 1000, 7);
+        const DelaunayTriangulation dt = live_in_input_order(ps);
+        const Adjacency live = dt.adjacency();
+        const Adjacency matched = build_adjacency(dt.tets(), identity(ps.size()));
+        ASSERT_EQ(live.simplices.size(), matched.simplices.size()) << dist;
+        // Each simplex (as given, oriented) with its four neighbours as simplices.
+        const auto described = [](const Adjacency& a) {
+            std::map<Tet, std::array<Tet, 4>> out;
+            for (std::size_t t = 0; t < a.simplices.size(); ++t) {
+                std::array<Tet, 4> across{};
+                for (std::size_t i = 0; i < 4; ++i) {
+                    const std::int32_t o = a.neighbors[4 * t + i];
+                    across[i] = o < 0 ? Tet{} : a.simplices[static_cast<std::size_t>(o)];
+                }
+                out[a.simplices[t]] = across;
+            }
+            return out;
+        };
+        EXPECT_EQ(described(live), described(matched)) << dist;
+        const auto rotated = [](std::vector<std::array<std::int32_t, 3>> hull) {
+            for (auto& h : hull) {
+                std::rotate(h.begin(), std::min_element(h.begin(), h.end()), h.end());
+            }
+            std::sort(hull.begin(), hull.end());
+            return hull;
+        };
+        EXPECT_EQ(rotated(live.hull), rotated(matched.hull)) << dist;
+        EXPECT_EQ(live.hull.size(), dt.hull_triangle_count());
+        for (std::uint32_t v = 0; v < ps.size(); ++v) {
+            const std::int32_t t = live.vertex_to_simplex[v];
+            ASSERT_GE(t, 0);
+            const Tet& tet = live.simplices[static_cast<std::size_t>(t)];
+            EXPECT_NE(std::find(tet.begin(), tet.end(), v), tet.end());
+        }
+        // Sorted by the lowest insertion rank (the bootstrap four first, then the input order).
+        std::vector<VertexId> rank(ps.size());
+        for (VertexId v = 0; v < dt.geometry().size(); ++v) {
+            rank[dt.geometry().key(v)] = v;
+        }
+        const auto lowest = [&](const Tet& t) {
+            return std::min(std::min(rank[t[0]], rank[t[1]]), std::min(rank[t[2]], rank[t[3]]));
+        };
+        for (std::size_t t = 1; t < live.simplices.size(); ++t) {
+            EXPECT_LE(lowest(live.simplices[t - 1]), lowest(live.simplices[t]));
+        }
+    }
+}
+
+/// Points inserted one by one after the build give the triangulation of all of them, repeats and
+/// submerged weighted points included.
+TEST(DelaunayTriangulation, InsertionsEqualTheBatchOfAllPoints) {
+    for (const char* dist : {"cube", "grid"}) {
+        PointSet ps = generate_points(dist, 600, 11);
+        ps.points.push_back(ps.points[17]);  // a repeat, inserted late
+        DelaunayTriangulation dt = live_in_input_order(head(ps, 300));
+        for (std::size_t i = 300; i < ps.size(); ++i) {
+            EXPECT_EQ(dt.insert(ps.points[i]), i);
+        }
+        EXPECT_EQ(dt.point_count(), ps.size());
+        EXPECT_TRUE(dt.check(CheckLevel::kDelaunay).empty()) << dist;
+        const Triangulation batch = test::triangulate_in_input_order(ps);
+        EXPECT_EQ(canonical(dt.tets()), canonical(batch.tets)) << dist;
+        ASSERT_EQ(dt.duplicates().size(), 1u);
+        const auto last = static_cast<std::uint32_t>(ps.size() - 1);
+        EXPECT_EQ(dt.duplicates()[0], (std::array<std::uint32_t, 2>{last, 17}));
+    }
+    const PointSet weighted = generate_points("cube", 400, 2, parse_weight_spec("uniform:0:0.1"));
+    DelaunayTriangulation dt = live_in_input_order(head(weighted, 100));
+    for (std::size_t i = 100; i < weighted.size(); ++i) {
+        dt.insert(weighted.points[i], weighted.weights[i]);
+    }
+    const Triangulation batch = test::triangulate_in_input_order(weighted);
+    EXPECT_EQ(canonical(dt.tets()), canonical(batch.tets));
+    EXPECT_EQ(dt.redundant(), batch.redundant);
+    EXPECT_GT(batch.redundant.size(), 0u);
+    EXPECT_TRUE(dt.check(CheckLevel::kDelaunay).empty());
+    EXPECT_THROW(dt.insert({0.5, std::numeric_limits<double>::quiet_NaN(), 0.5}, 0.0), Error);
+}
+
+TEST(DelaunayTriangulation, LocateFindsAClosedCell) {
+    const PointSet ps = generate_points("cube", 500, 4);
+    const DelaunayTriangulation dt = live_in_input_order(ps);
+    Random rng(9);
+    for (int k = 0; k < 200; ++k) {
+        const Point3 p{rng.uniform(-0.2, 1.2), rng.uniform(-0.2, 1.2), rng.uniform(-0.2, 1.2)};
+        const TetId t = dt.locate(p);
+        const TetVertices& v = dt.storage().vertices(t);
+        const Geometry& g = dt.geometry();
+        if (is_ghost(v)) {
+            // p strictly in front of the hull triangle.
+            EXPECT_EQ(Geometry::orient3d(g.point(v[0]), g.point(v[2]), g.point(v[1]), p, nullptr),
+                      Sign::kNeg);
+            continue;
+        }
+        for (int f = 0; f < 4; ++f) {
+            const auto tri = facet_vertices(v, f);
+            EXPECT_NE(
+                Geometry::orient3d(g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), p, nullptr),
+                Sign::kNeg);
+        }
+    }
+}
+
+TEST(DelaunayTriangulation, RemovalEqualsRebuildAndInsertionContinues) {
+    const PointSet ps = generate_points("grid", 216, 1);
+    DelaunayTriangulation dt = live_in_input_order(head(ps, 200));
+    const std::vector<std::uint32_t> ids{0, 7, 199, 100, 43, 36, 180};
+    RetriangulationCounters counters;
+    dt.remove(ids, &counters);
+    EXPECT_EQ(counters.vertices_deleted, ids.size());
+    std::vector<bool> gone(ps.size(), false);
+    for (auto id : ids) {
+        gone[id] = true;
+    }
+    std::vector<bool> gone_and_later = gone;
+    std::fill(gone_and_later.begin() + 200, gone_and_later.end(), true);
+    EXPECT_EQ(canonical(dt.tets()), canonical(rebuilt_without(ps, gone_and_later)));
+    EXPECT_TRUE(dt.check(CheckLevel::kDelaunay).empty());
+    // The bootstrap vertices (0 among them) are gone; insertion goes on.
+    for (std::size_t i = 200; i < ps.size(); ++i) {
+        dt.insert(ps.points[i]);
+    }
+    EXPECT_EQ(canonical(dt.tets()), canonical(rebuilt_without(ps, gone)));
+    EXPECT_TRUE(dt.check(CheckLevel::kDelaunay).empty());
+    const std::vector<std::uint32_t> again{7};
+    EXPECT_THROW(dt.remove(again), Error);
+}
+
+TEST(DelaunayTriangulation, RemovalRefusesBadIdsBeforeChangingAnything) {
+    PointSet ps = generate_points("cube", 50, 4);
+    ps.points.push_back(ps.points[3]);  // point 50 repeats point 3
+    DelaunayTriangulation dt = live_in_input_order(ps);
+    const Tets before = canonical(dt.tets());
+    for (const std::vector<std::uint32_t>& bad :
+         {std::vector<std::uint32_t>{3}, {51}, {4, 4}, {9, 51}}) {
+        EXPECT_THROW(dt.remove(bad), Error);
+        EXPECT_EQ(canonical(dt.tets()), before);
+    }
+    const std::vector<std::uint32_t> both{3, 50};
+    dt.remove(both);
+    std::vector<bool> gone(ps.size(), false);
+    gone[3] = gone[50] = true;
+    EXPECT_EQ(canonical(dt.tets()), canonical(rebuilt_without(ps, gone)));
+    EXPECT_TRUE(dt.duplicates().empty());
+
+    PointSet flat;
+    flat.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}};
+    DelaunayTriangulation pyramid = live_in_input_order(flat);
+    const std::vector<std::uint32_t> apex{4};
+    EXPECT_THROW(pyramid.remove(apex), Error);
+    EXPECT_EQ(pyramid.tet_count(), 2u);
+}
+
+TEST(DelaunayTriangulation, FlipsAreCheckedAndUndone) {
+    const PointSet ps = generate_points("cube", 300, 6);
+    DelaunayTriangulation dt = live_in_input_order(ps);
+    const Tets before = canonical(dt.tets());
+    // The first interior facet whose 2-3 flip is legal (both apices see the facet).
+    const ArrayStorage& s = dt.storage();
+    std::vector<TetId> fresh;
+    for (TetId t = 0; t < s.capacity() && fresh.empty(); ++t) {
+        if (!s.alive(t) || is_ghost(s.vertices(t))) {
+            continue;
+        }
+        for (int f = 0; f < 4 && fresh.empty(); ++f) {
+            if (!is_ghost(s.vertices(tet_of(s.adjacent(t, f))))) {
+                fresh = dt.flip23(half_facet(t, f));
+            }
+        }
+    }
+    ASSERT_EQ(fresh.size(), 3u);
+    EXPECT_TRUE(dt.check(CheckLevel::kComplex).empty());
+    EXPECT_FALSE(dt.check(CheckLevel::kDelaunay).empty());  // a Delaunay facet flipped away
+    // The 3-2 flip around the new edge restores the Delaunay triangulation.
+    const TetVertices& v = s.vertices(fresh[0]);
+    int i = -1;
+    int j = -1;
+    for (int a = 0; a < 4; ++a) {
+        const VertexId w = v[static_cast<std::size_t>(a)];
+        const bool shared = std::all_of(fresh.begin(), fresh.end(), [&](TetId t) {
+            const TetVertices& u = s.vertices(t);
+            return std::find(u.begin(), u.end(), w) != u.end();
+        });
+        if (shared) {
+            (i < 0 ? i : j) = a;
+        }
+    }
+    ASSERT_GE(j, 0);
+    EXPECT_EQ(dt.flip32(fresh[0], i, j).size(), 2u);
+    EXPECT_EQ(canonical(dt.tets()), before);
+    EXPECT_TRUE(dt.check(CheckLevel::kDelaunay).empty());
+}
+
+TEST(DelaunayTriangulation, ReleaseByIndexIsTheComplexOfTheTetrahedra) {
+    const PointSet ps = generate_points("ball", 800, 2);
+    OrderOptions order_options;
+    order_options.kind = OrderKind::kHilbert;
+    const InsertionOrder order = make_insertion_order(ps.points, order_options);
+    DelaunayTriangulation dt(ps, order.sequence, TriangulateOptions{});
+    const Tets tets = dt.tets();
+    const ArrayStorage by_index = std::move(dt).release_by_index();
+    EXPECT_TRUE(check_complex(by_index, geometry_by_index(ps)).empty());
+    EXPECT_EQ(canonical(solid_tets(by_index)), canonical(tets));
+    EXPECT_EQ(canonical(solid_tets(complex_from_tets(tets))), canonical(tets));
+    for (VertexId v = 0; v < ps.size(); ++v) {
+        const TetId t = by_index.tet_at_vertex(v);
+        ASSERT_NE(t, kNoTet);
+        const TetVertices& w = by_index.vertices(t);
+        EXPECT_NE(std::find(w.begin(), w.end(), v), w.end());
+    }
+}
+
+}  // namespace
+}  // namespace cavity::core
