@@ -9,6 +9,7 @@
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/mesh/dig_cavity.h"
 #include "cavity/core/mesh/facet_gluer.h"
 
 namespace cavity::core {
@@ -135,8 +136,9 @@ bool LiveCdt::conflicts(TetId t, VertexId u) {
     return geometry_.conflicts_ghost(v, u, {apex, apex, apex, apex}, nullptr);
 }
 
-/// DigCavity with constraints: the search crosses a facet only if it is not a polygon triangle
-/// or the new vertex lies on that triangle. Nothing is deleted; the tetrahedra are only stamped.
+/// DigCavity with constraints (§5.7): the dig of Bowyer–Watson (dig_cavity.h) with the polygon
+/// triangles blocked, except those the new vertex lies on. Nothing is deleted, only stamped: the
+/// insertion may still be refused.
 LiveCdt::Cavity LiveCdt::dig(const Carrier& carrier, VertexId u) {
     Cavity cavity;
     if (++epoch_ == 0) {
@@ -144,46 +146,47 @@ LiveCdt::Cavity LiveCdt::dig(const Carrier& carrier, VertexId u) {
         epoch_ = 1;
     }
     stamp_.resize(storage_.capacity(), 0u);
-    // The tetrahedron holding the point conflicts without a test: a solid one has it in its closure
-    // and it is not a vertex, so strictly inside the circumball; a ghost has it strictly in front.
-    stamp_[carrier.tet] = epoch_;
-    cavity.tets.push_back(carrier.tet);
-    std::vector<HalfFacet> stack;
-    stack.reserve(4);
-    for (int f = 0; f < 4; ++f) {
-        stack.push_back(half_facet(carrier.tet, f));
-    }
-    while (!stack.empty()) {
-        const HalfFacet top = stack.back();
-        stack.pop_back();
-        const TetId t = tet_of(top);
-        const int f = facet_of(top);
-        const HalfFacet across = storage_.adjacent(t, f);
-        const TetId far = tet_of(across);
-        const Triangle tri = facet_vertices(storage_.vertices(t), f);
-        const bool polygon = !has_ghost(tri) && face_index_.count(sorted(tri)) != 0;
-        const bool blocked = polygon && !carrier.inside(tri);
-        if (polygon && !blocked) {
-            cavity.split.insert(sorted(tri));
-        }
-        if (in_cavity(far)) {
-            if (blocked) {
-                cavity.doubled.insert(sorted(tri));  // reached around the polygon
+
+    struct Rules {
+        LiveCdt& cdt;
+        const Carrier& carrier;
+        VertexId u;
+        Cavity& cavity;
+        bool polygon = false;  // whether the face blocked() last looked at is a polygon triangle
+
+        bool blocked(TetId t, int f) {
+            const Triangle tri = facet_vertices(cdt.storage_.vertices(t), f);
+            polygon = !has_ghost(tri) && cdt.face_index_.count(sorted(tri)) != 0;
+            const bool through = polygon && carrier.inside(tri);
+            if (through) {
+                cavity.split.insert(sorted(tri));
             }
-            continue;
+            return polygon && !through;
         }
-        if (blocked || !conflicts(far, u)) {
+
+        bool in_cavity(TetId t) const { return cdt.in_cavity(t); }
+
+        // A solid tetrahedron holding the point has it in its closure and not as a vertex, so
+        // strictly inside the circumball; a ghost has it strictly in front: t0 is taken untested.
+        bool conflicts(TetId t) { return cdt.conflicts(t, u); }
+
+        void take(TetId t) {
+            cdt.stamp_[t] = cdt.epoch_;
+            cavity.tets.push_back(t);
+        }
+
+        void blocked_inside(TetId t, int f) {
+            // Reached around the polygon: its triangle has the cavity on both sides.
+            cavity.doubled.insert(sorted(facet_vertices(cdt.storage_.vertices(t), f)));
+        }
+
+        void cavity_face(TetId t, int f, HalfFacet across) {
             cavity.faces.push_back({t, f, across, polygon});
-            continue;
         }
-        stamp_[far] = epoch_;
-        cavity.tets.push_back(far);
-        for (int g = 0; g < 4; ++g) {
-            if (g != facet_of(across)) {
-                stack.push_back(half_facet(far, g));
-            }
-        }
-    }
+    };
+
+    Rules rules{*this, carrier, u, cavity};
+    dig_cavity(storage_, carrier.tet, dig_stack_, rules);
     // A polygon face found before the search reached its far side from elsewhere is no cavity face.
     std::erase_if(cavity.faces,
                   [&](const CavityFace& face) { return in_cavity(tet_of(face.across)); });

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cavity/core/base/pod_stack.h"
 #include "cavity/core/cdt/cdt.h"
 #include "cavity/core/delaunay/stochastic_walk.h"
 #include "cavity/core/geometry/geometry.h"
@@ -173,6 +174,7 @@ private:
     TetId hint_ = kNoTet;  ///< where the next walk starts
     WalkRandom walk_random_{0x9E37'79B9'7F4A'7C15u};
     std::vector<std::uint32_t> stamp_;  ///< stamp_[t] == epoch_: t is in the current cavity
+    PodStack<HalfFacet> dig_stack_;
     std::uint32_t epoch_ = 0;
 };
 

@@ -9,6 +9,7 @@
 #include "cavity/core/base/pod_stack.h"
 #include "cavity/core/delaunay/observer.h"
 #include "cavity/core/geometry/geometry.h"
+#include "cavity/core/mesh/dig_cavity.h"
 #include "cavity/core/mesh/facet_gluer.h"
 #include "cavity/core/mesh/tet_storage.h"
 #include "cavity/core/mesh/tetrahedron.h"
@@ -85,7 +86,8 @@ public:
     }
 
     /// InsertVertex3D(u, t0): t0 must conflict with u. Deletes every tetrahedron in conflict with
-    /// u (a depth-first search from t0 through conflicting neighbours: DigCavity3D) and fills the
+    /// u (a depth-first search from t0 through conflicting neighbours: DigCavity3D, dig_cavity.h,
+    /// the loop the constrained insertion of the CDT shares) and fills the
     /// cavity with one new tetrahedron per cavity face. As in the book's pseudocode, a tetrahedron
     /// outside the cavity is tested once for every cavity face it borders (remembering the verdicts
     /// was measured to cost more than the tests it saves), so the conflict tests number (deleted -
@@ -101,33 +103,8 @@ public:
             deleted_stamp_.resize(geometry_.size(), kNoStamp);
             created_stamp_.resize(geometry_.size(), kNoStamp);
         }
-        remove(t0);
-        for (int f = 0; f < 4; ++f) {
-            stack_.push_back(half_facet(t0, f));
-        }
-        while (!stack_.empty()) {
-            const HalfFacet top = stack_.pop_back();
-            const TetId t = tet_of(top);
-            const int f = facet_of(top);
-            const HalfFacet across = storage_.adjacent(t, f);
-            if (across == kNoHalfFacet) {
-                continue;  // the far side is in the cavity already: not a cavity face
-            }
-            const TetId far = tet_of(across);
-            if constexpr (Observer::kCounting) {
-                ++counters()->dig_tests;
-            }
-            if (conflicts(far, u)) {
-                remove(far);
-                for (int g = 0; g < 4; ++g) {
-                    if (g != facet_of(across)) {
-                        stack_.push_back(half_facet(far, g));
-                    }
-                }
-            } else {
-                fill_cavity_face(u, t, f, across);
-            }
-        }
+        Digger digger{*this, u};
+        dig_cavity(storage_, t0, stack_, digger);
         if constexpr (Storage::kExplicitAdjacency) {
             gluer_.begin(created_.size());
             for (TetId t : created_) {
@@ -180,6 +157,33 @@ public:
 
 private:
     static constexpr std::uint32_t kNoStamp = 0xFFFF'FFFFu;
+
+    /// Unconstrained DigCavity3D: nothing is blocked, and a deleted tetrahedron is in the cavity
+    /// (the storage answers kNoHalfFacet across from it), so tetrahedra are deleted as they are
+    /// taken and each cavity face gets its new tetrahedron at once.
+    struct Digger {
+        BowyerWatson& engine;
+        VertexId u;
+
+        static bool blocked(TetId, int) { return false; }
+
+        static bool in_cavity(TetId) { return false; }
+
+        bool conflicts(TetId t) {
+            if constexpr (Observer::kCounting) {
+                ++engine.counters()->dig_tests;
+            }
+            return engine.conflicts(t, u);
+        }
+
+        void take(TetId t) { engine.remove(t); }
+
+        static void blocked_inside(TetId, int) {}
+
+        void cavity_face(TetId t, int f, HalfFacet across) {
+            engine.fill_cavity_face(u, t, f, across);
+        }
+    };
 
     TetId add(const TetVertices& v, std::uint64_t step) {
         const TetId t = storage_.add_tetrahedron(v);
