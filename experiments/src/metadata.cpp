@@ -6,6 +6,8 @@
 #include <memory>
 #include <thread>
 
+#include "suite_kinds.h"
+
 namespace cavity::experiments {
 
 namespace {
@@ -106,11 +108,9 @@ std::string metadata_json(const Suite& suite,
     if (suite.prefix != 0) {
         field("prefix", std::to_string(suite.prefix), false);
     }
-    // The creation, hj and extend kinds always start from the order's own first four points.
-    const bool own_first = suite.kind == SuiteKind::kCreation || suite.kind == SuiteKind::kHj ||
-                           suite.kind == SuiteKind::kExtend;
-    field("bootstrap", suite.bootstrap_first || own_first ? "first" : "widest", true);
-    if (suite.kind == SuiteKind::kRuns || suite.kind == SuiteKind::kDegenerate) {
+    const SuiteKindInfo& kind = suite_kind_info(suite.kind);
+    field("bootstrap", suite.bootstrap_first || kind.own_first ? "first" : "widest", true);
+    if (kind.timed) {
         // What time_s and peak_rss_bytes measure (measure_triangulation.cpp).
         field("timed_engine", suite.count_conflicts ? "counting" : "uninstrumented", true);
     }

@@ -13,6 +13,7 @@
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/plc_families.h"
 #include "format.h"
+#include "suite_kinds.h"
 
 namespace cavity::experiments {
 
@@ -96,26 +97,14 @@ private:
 };
 
 SuiteKind parse_kind(const LineReader& reader, const std::string& word) {
-    constexpr SuiteKind kKinds[] = {SuiteKind::kRuns,
-                                    SuiteKind::kJTets,
-                                    SuiteKind::kCreation,
-                                    SuiteKind::kDegenerate,
-                                    SuiteKind::kPeers,
-                                    SuiteKind::kGiftWrap,
-                                    SuiteKind::kDeletion,
-                                    SuiteKind::kCdt,
-                                    SuiteKind::kHj,
-                                    SuiteKind::kLocality,
-                                    SuiteKind::kExtend};
-    for (SuiteKind kind : kKinds) {
-        if (word == suite_kind_name(kind)) {
-            return kind;
+    std::string names;
+    for (const SuiteKindInfo& info : suite_kinds()) {
+        if (word == info.name) {
+            return info.kind;
         }
+        names += (names.empty() ? "" : ", ") + std::string(info.name);
     }
-    reader.fail(
-        "unknown kind '" + word +
-        "' (runs, jtets, creation, degenerate, peers, giftwrap, deletion, cdt, hj, locality or "
-        "extend)");
+    reader.fail("unknown kind '" + word + "' (" + names + ")");
 }
 
 void check_distribution(const std::string& name) {
@@ -160,31 +149,7 @@ TierSettings* tier_of_key(Suite& suite, const std::string& key, std::string_view
 }  // namespace
 
 std::string_view suite_kind_name(SuiteKind kind) {
-    switch (kind) {
-        case SuiteKind::kRuns:
-            return "runs";
-        case SuiteKind::kJTets:
-            return "jtets";
-        case SuiteKind::kCreation:
-            return "creation";
-        case SuiteKind::kHj:
-            return "hj";
-        case SuiteKind::kLocality:
-            return "locality";
-        case SuiteKind::kExtend:
-            return "extend";
-        case SuiteKind::kDegenerate:
-            return "degenerate";
-        case SuiteKind::kPeers:
-            return "peers";
-        case SuiteKind::kGiftWrap:
-            return "giftwrap";
-        case SuiteKind::kDeletion:
-            return "deletion";
-        case SuiteKind::kCdt:
-            return "cdt";
-    }
-    return "runs";
+    return suite_kind_info(kind).name;
 }
 
 const TierSettings& Suite::tier(std::string_view tier_name) const {

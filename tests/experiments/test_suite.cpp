@@ -28,6 +28,21 @@ n.paper   1000 10000
 seeds.paper 1..5
 )";
 
+/// The suite-kind table (suite_kinds.cpp) has a row for every kind: its name reads back as the
+/// kind, and its measurement declares columns.
+TEST(Suite, EveryKindHasARow) {
+    for (int k = 0; k <= static_cast<int>(SuiteKind::kExtend); ++k) {
+        const auto kind = static_cast<SuiteKind>(k);
+        const std::string name(suite_kind_name(kind));
+        const bool plc = kind == SuiteKind::kCdt;
+        const std::string text =
+            "question q\nkind " + name + "\ndist " + (plc ? "hull-faces" : "cube") +
+            "\nn.quick 10\nseeds.quick 1\nn.full 10\nseeds.full 1\nadded.quick 2\nadded.full 2\n";
+        EXPECT_EQ(parse_suite(text, "k.suite", "k").kind, kind) << name;
+        EXPECT_FALSE(metric_columns(kind).empty()) << name;
+    }
+}
+
 TEST(Suite, ParsesEveryKey) {
     const Suite suite = parse_suite(kGood, "good.suite", "good");
     EXPECT_EQ(suite.question, "does it parse?");
