@@ -29,4 +29,31 @@ inline core::Triangulation triangulate_in_input_order(const core::PointSet& poin
     return core::triangulate(points, sequence, core::TriangulateOptions{});
 }
 
+/// Bowyer-Watson on the points not deleted, mapped back to the original indices. Dropping points
+/// keeps the relative order of the others' keys, so the perturbation decides the same way.
+inline core::Triangulation rebuilt_without(const core::PointSet& ps,
+                                           const std::vector<bool>& gone) {
+    core::PointSet kept;
+    std::vector<std::uint32_t> original;
+    for (std::uint32_t i = 0; i < ps.size(); ++i) {
+        if (!gone[i]) {
+            original.push_back(i);
+            kept.points.push_back(ps.points[i]);
+            if (ps.weighted()) {
+                kept.weights.push_back(ps.weights[i]);
+            }
+        }
+    }
+    core::Triangulation t = triangulate_in_input_order(kept);
+    for (auto& tet : t.tets) {
+        for (auto& v : tet) {
+            v = original[v];
+        }
+    }
+    for (auto& r : t.redundant) {
+        r = original[r];
+    }
+    return t;
+}
+
 }  // namespace cavity::test

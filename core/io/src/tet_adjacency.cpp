@@ -149,13 +149,7 @@ Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32
             if (out.neighbors[4 * t + f] >= 0) {
                 continue;
             }
-            // kFacetVertices lists facet f with the opposite vertex on its orient3d-positive side,
-            // which for a tetrahedron of positive right-hand volume is clockwise seen from
-            // outside: reversed, the hull triangle is counter-clockwise.
-            const auto& s = kFacetVertices[f];
-            out.hull.push_back({static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[0])]),
-                                static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[2])]),
-                                static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[1])])});
+            out.hull.push_back(hull_triangle(tet, f));
         }
     }
     return out;

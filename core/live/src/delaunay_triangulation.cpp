@@ -389,12 +389,7 @@ Adjacency DelaunayTriangulation::adjacency() const {
             if (neighbour >= 0) {
                 continue;
             }
-            // As build_adjacency lists it: facet i of the positive-volume tetrahedron is clockwise
-            // seen from outside, so reversed it is counter-clockwise.
-            const auto& f = kFacetVertices[i];
-            out.hull.push_back({static_cast<std::int32_t>(tet[static_cast<std::size_t>(f[0])]),
-                                static_cast<std::int32_t>(tet[static_cast<std::size_t>(f[2])]),
-                                static_cast<std::int32_t>(tet[static_cast<std::size_t>(f[1])])});
+            out.hull.push_back(hull_triangle(tet, i));
         }
     }
     return out;

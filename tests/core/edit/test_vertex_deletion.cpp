@@ -27,32 +27,6 @@ Triangulation bowyer_watson(const PointSet& ps) {
     return test::triangulate_in_input_order(ps);
 }
 
-/// Bowyer-Watson on the points not deleted, mapped back to the original indices. Dropping points
-/// keeps the relative order of the others' keys, so the perturbation decides the same way.
-Triangulation rebuilt_without(const PointSet& ps, const std::vector<bool>& gone) {
-    PointSet kept;
-    std::vector<std::uint32_t> original;
-    for (std::uint32_t i = 0; i < ps.size(); ++i) {
-        if (!gone[i]) {
-            original.push_back(i);
-            kept.points.push_back(ps.points[i]);
-            if (ps.weighted()) {
-                kept.weights.push_back(ps.weights[i]);
-            }
-        }
-    }
-    Triangulation t = bowyer_watson(kept);
-    for (auto& tet : t.tets) {
-        for (auto& v : tet) {
-            v = original[v];
-        }
-    }
-    for (auto& r : t.redundant) {
-        r = original[r];
-    }
-    return t;
-}
-
 /// Deletes `count` vertices one by one from the live complex (every third one a hull vertex),
 /// comparing with the rebuilt triangulation after each. Counts in `resurfaced` the submerged
 /// (weighted redundant) points that became vertices.
@@ -96,7 +70,7 @@ void delete_and_compare(const PointSet& ps,
         });
         const auto problems = check_complex(storage, geometry);
         ASSERT_TRUE(problems.empty()) << problems.front();
-        const Triangulation expected = rebuilt_without(ps, gone);
+        const Triangulation expected = test::rebuilt_without(ps, gone);
         ASSERT_EQ(canonical(solid_tets(storage)), canonical(expected.tets));
         ASSERT_EQ(submerged, expected.redundant);
     }

@@ -45,29 +45,6 @@ PointSet head(const PointSet& ps, std::size_t count) {
     return out;
 }
 
-/// Bowyer-Watson on the points not gone, in the original indices: dropping points keeps the
-/// relative order of the others' keys, so the perturbation decides the same way.
-Tets rebuilt_without(const PointSet& ps, const std::vector<bool>& gone) {
-    PointSet kept;
-    std::vector<std::uint32_t> original;
-    for (std::uint32_t i = 0; i < ps.size(); ++i) {
-        if (!gone[i]) {
-            original.push_back(i);
-            kept.points.push_back(ps.points[i]);
-            if (ps.weighted()) {
-                kept.weights.push_back(ps.weights[i]);
-            }
-        }
-    }
-    Tets tets = test::triangulate_in_input_order(kept).tets;
-    for (auto& tet : tets) {
-        for (auto& v : tet) {
-            v = original[v];
-        }
-    }
-    return tets;
-}
-
 TEST(DelaunayTriangulation, ReleaseEqualsTriangulateForEveryLocator) {
     const PointSet ps = generate_points("ball", 2000, 3);
     OrderOptions order_options;
@@ -218,13 +195,13 @@ TEST(DelaunayTriangulation, RemovalEqualsRebuildAndInsertionContinues) {
     }
     std::vector<bool> gone_and_later = gone;
     std::fill(gone_and_later.begin() + 200, gone_and_later.end(), true);
-    EXPECT_EQ(canonical(dt.tets()), canonical(rebuilt_without(ps, gone_and_later)));
+    EXPECT_EQ(canonical(dt.tets()), canonical(test::rebuilt_without(ps, gone_and_later).tets));
     EXPECT_TRUE(dt.check(CheckLevel::kDelaunay).empty());
     // The bootstrap vertices (0 among them) are gone; insertion goes on.
     for (std::size_t i = 200; i < ps.size(); ++i) {
         dt.insert(ps.points[i]);
     }
-    EXPECT_EQ(canonical(dt.tets()), canonical(rebuilt_without(ps, gone)));
+    EXPECT_EQ(canonical(dt.tets()), canonical(test::rebuilt_without(ps, gone).tets));
     EXPECT_TRUE(dt.check(CheckLevel::kDelaunay).empty());
     const std::vector<std::uint32_t> again{7};
     EXPECT_THROW(dt.remove(again), Error);
@@ -244,7 +221,7 @@ TEST(DelaunayTriangulation, RemovalRefusesBadIdsBeforeChangingAnything) {
     dt.remove(both);
     std::vector<bool> gone(ps.size(), false);
     gone[3] = gone[50] = true;
-    EXPECT_EQ(canonical(dt.tets()), canonical(rebuilt_without(ps, gone)));
+    EXPECT_EQ(canonical(dt.tets()), canonical(test::rebuilt_without(ps, gone).tets));
     EXPECT_TRUE(dt.duplicates().empty());
 
     PointSet flat;

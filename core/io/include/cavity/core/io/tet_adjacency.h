@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cavity/core/io/mesh_io.h"
+#include "cavity/core/mesh/tetrahedron.h"
 
 /// The combinatorial views of a triangulation that leave the program (TetGen's .neigh and .face,
 /// scipy.spatial.Delaunay's attributes), derived from the bare list of tetrahedra that
@@ -25,6 +26,17 @@ struct Adjacency {
     /// For each input point, one tetrahedron having it as a vertex, or -1 (repeats, redundant).
     std::vector<std::int32_t> vertex_to_simplex;
 };
+
+/// The facet opposite vertex i of `tet` (positive right-hand volume) as a hull triangle,
+/// counter-clockwise seen from outside: kFacetVertices lists facet i with the opposite vertex on
+/// its orient3d-positive side, which for such a tetrahedron is clockwise seen from outside, so the
+/// listing is reversed.
+inline std::array<std::int32_t, 3> hull_triangle(const Tet& tet, std::size_t i) {
+    const auto& s = kFacetVertices[i];
+    return {static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[0])]),
+            static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[2])]),
+            static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[1])])};
+}
 
 /// Renumbers `tets` (positive right-hand volume, vertex ids < rank.size()) and matches their facets
 /// in O(m) expected time: facets are bucketed by their lowest-ranked vertex (counting sort) and
