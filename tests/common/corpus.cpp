@@ -60,6 +60,7 @@ std::vector<Point3> decimal_grid(int k) {
 
 std::vector<Point3> cube_corners() {
     std::vector<Point3> points;
+    points.reserve(8);
     for (int i = 0; i < 8; ++i) {
         points.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
     }
@@ -95,25 +96,25 @@ PointSet mixed_magnitudes(std::size_t n) {
 
 std::vector<CorpusCase> degenerate_corpus() {
     std::vector<CorpusCase> corpus;
-    corpus.push_back({"grid5", generated("grid", 125), 6 * 4 * 4 * 4});
+    corpus.push_back({"grid5", generated("grid", 125), 6LL * 4 * 4 * 4});
     corpus.push_back({"decimal_grid", from(decimal_grid(5), "decimal grid"), -1});
     corpus.push_back({"cospherical", generated("cospherical", 150), -1});
     corpus.push_back({"paraboloid", generated("paraboloid", 100), -1});
     corpus.push_back({"cube_corners", from(cube_corners(), "cube corners"), -1});
     corpus.push_back({"layers", generated("layers", 200), -1});
     corpus.push_back(
-        {"duplicates", from(with_duplicates(), "grid with duplicates"), 6 * 2 * 2 * 2});
+        {"duplicates", from(with_duplicates(), "grid with duplicates"), 6LL * 2 * 2 * 2});
     corpus.push_back({"grid_ulp", ulp_moved(generated("grid", 64)), -1});
     corpus.push_back({"cospherical_ulp", ulp_moved(generated("cospherical", 100)), -1});
-    corpus.push_back({"grid_1e300", scaled(generated("grid", 64), 1e300), 6 * 3 * 3 * 3});
-    corpus.push_back({"grid_1em300", scaled(generated("grid", 64), 1e-300), 6 * 3 * 3 * 3});
-    corpus.push_back({"grid_subnormal", scaled(generated("grid", 64), 1e-310), 6 * 3 * 3 * 3});
+    corpus.push_back({"grid_1e300", scaled(generated("grid", 64), 1e300), 6LL * 3 * 3 * 3});
+    corpus.push_back({"grid_1em300", scaled(generated("grid", 64), 1e-300), 6LL * 3 * 3 * 3});
+    corpus.push_back({"grid_subnormal", scaled(generated("grid", 64), 1e-310), 6LL * 3 * 3 * 3});
     corpus.push_back({"cospherical_1e300", scaled(generated("cospherical", 60), 1e300), -1});
     corpus.push_back({"grid_offset", offset(generated("grid", 64), 1e9), -1});
-    corpus.push_back({"grid_offset_1e15", offset(generated("grid", 64), 1e15), 6 * 3 * 3 * 3});
+    corpus.push_back({"grid_offset_1e15", offset(generated("grid", 64), 1e15), 6LL * 3 * 3 * 3});
     corpus.push_back({"mixed_magnitudes", mixed_magnitudes(100), -1});
-    corpus.push_back({"moment", generated("moment", 20), (20 - 2) * (20 - 3) / 2});
-    corpus.push_back({"skew_lines", generated("skew-lines", 30), 14 * 14});
+    corpus.push_back({"moment", generated("moment", 20), (20LL - 2) * (20 - 3) / 2});
+    corpus.push_back({"skew_lines", generated("skew-lines", 30), 14LL * 14});
     corpus.push_back({"cube_uniform", generated("cube", 300), -1});
     return corpus;
 }

@@ -20,6 +20,7 @@ using predicates::WeightedPoint3;
 /// and each diagonal plane.
 inline std::vector<Point3> cube_corners() {
     std::vector<Point3> points;
+    points.reserve(8);
     for (int i = 0; i < 8; ++i) {
         points.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
     }

@@ -148,6 +148,7 @@ void compare_all_triangles(const std::vector<WeightedPoint3>& plane,
 
 std::vector<WeightedPoint3> unweighted(const std::vector<Point3>& points) {
     std::vector<WeightedPoint3> weighted;
+    weighted.reserve(points.size());
     for (const Point3& p : points) {
         weighted.push_back(test::unweighted(p));
     }

@@ -59,7 +59,8 @@ struct Tally {
     void add(const SosVerdict& v, bool flat) {
         if (v.cofactors > 0) {
             ++ties;
-            ++tie_signs[static_cast<std::size_t>(to_int(v.sign) + 1)];
+            const int slot = to_int(v.sign) + 1;  // -1, 0, +1 -> 0, 1, 2
+            ++tie_signs[static_cast<std::size_t>(slot)];
         }
         if (!flat) {
             ++depths[v.cofactors];
@@ -87,6 +88,7 @@ Points5 pick(const std::vector<WeightedPoint3>& set, const std::array<std::size_
 
 std::vector<WeightedPoint3> unweighted(const std::vector<Point3>& points) {
     std::vector<WeightedPoint3> weighted;
+    weighted.reserve(points.size());
     for (const Point3& p : points) {
         weighted.push_back(test::unweighted(p));
     }

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -60,7 +61,8 @@ public:
 
     /// Moves v by 1-4 ulps up or down.
     double nudged(double v) {
-        const double toward = integer(0, 1) == 0 ? INFINITY : -INFINITY;
+        const double toward = integer(0, 1) == 0 ? std::numeric_limits<double>::infinity()
+                                                 : -std::numeric_limits<double>::infinity();
         for (int step = integer(1, 4); step > 0; --step) {
             v = std::nextafter(v, toward);
         }

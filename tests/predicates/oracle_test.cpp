@@ -109,7 +109,8 @@ TEST_P(OracleIdentity, LiftedDeterminantHasTheSignOfTheDifferenceForm) {
         // Bound 1 gives many exact zeros; 4096 gives typical nonzero determinants.
         const Query q = small_integer_query(GetParam(), rng, i % 2 == 0 ? 1 : 4096);
         const Sign expected = difference_form(q);
-        ++seen[static_cast<std::size_t>(to_int(expected) + 1)];
+        const int slot = to_int(expected) + 1;  // -1, 0, +1 -> 0, 1, 2
+        ++seen[static_cast<std::size_t>(slot)];
         const Sign got = evaluate_oracle(q);
         if (got != expected && ++mismatches <= 5) {
             ADD_FAILURE() << "oracle " << to_int(got) << ", difference form " << to_int(expected)

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace cavity::predicates::testing {
@@ -90,7 +91,8 @@ Query nudged(Query q, Rng& rng) {
     const std::int64_t moves = rng.integer(1, 3);
     for (std::int64_t m = 0; m < moves; ++m) {
         double& x = q.v[static_cast<std::size_t>(rng.integer(0, n - 1))];
-        const double direction = rng.coin() ? INFINITY : -INFINITY;
+        const double direction = rng.coin() ? std::numeric_limits<double>::infinity()
+                                            : -std::numeric_limits<double>::infinity();
         for (std::int64_t ulp = rng.integer(1, 4); ulp > 0; --ulp) {
             x = std::nextafter(x, direction);
         }

@@ -22,7 +22,7 @@ using test::dyadic_grid_points;
 using test::make_plc;
 
 std::filesystem::path write_temp(const std::string& name, const std::string& text) {
-    const auto path = std::filesystem::temp_directory_path() / ("cavity_cdt_" + name);
+    auto path = std::filesystem::temp_directory_path() / ("cavity_cdt_" + name);
     std::ofstream(path) << text;
     return path;
 }

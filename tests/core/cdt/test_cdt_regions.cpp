@@ -44,7 +44,7 @@ std::string nested_cubes(const std::string& regions) {
 }
 
 std::filesystem::path write_temp(const std::string& name, const std::string& text) {
-    const auto path = std::filesystem::temp_directory_path() / ("cavity_regions_" + name);
+    auto path = std::filesystem::temp_directory_path() / ("cavity_regions_" + name);
     std::ofstream(path) << text;
     return path;
 }

@@ -290,6 +290,7 @@ TEST(CdtVertexInsertion, GridDegeneratePlc) {
     // A square's loop lists every grid point on its sides (a point inside an edge is no PLC).
     const auto square = [&](int z) {
         std::vector<std::uint32_t> loop;
+        loop.reserve(16);
         for (int k = 0; k < 4; ++k) {
             loop.push_back(id(k, 0, z));
         }

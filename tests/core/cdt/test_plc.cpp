@@ -653,7 +653,7 @@ TEST(ExactPlaneSide, AgreesWithTheRationalOffset) {
 // -------------------------------------------
 
 std::filesystem::path write_temp(const std::string& name, const std::string& text) {
-    const auto path = std::filesystem::temp_directory_path() / ("cavity_plc_" + name);
+    auto path = std::filesystem::temp_directory_path() / ("cavity_plc_" + name);
     std::ofstream(path) << text;
     return path;
 }

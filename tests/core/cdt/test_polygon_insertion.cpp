@@ -580,7 +580,7 @@ TEST(PolygonInsertion, SearchStaysLocal) {
         "depth-first %llu); a scan tests %llu\n",
         static_cast<unsigned long long>(w.region_tets),
         static_cast<unsigned long long>(w.region_vertices),
-        static_cast<unsigned long long>(w.rotary_steps + w.search_visited),
+        static_cast<unsigned long long>(w.rotary_steps) + w.search_visited,
         static_cast<unsigned long long>(w.rotary_steps),
         static_cast<unsigned long long>(w.search_visited),
         static_cast<unsigned long long>(inserted.scan));

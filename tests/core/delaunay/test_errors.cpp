@@ -45,6 +45,7 @@ TEST(Errors, TiltedCoplanarNamesDimensionTwo) {
 
 TEST(Errors, CollinearNamesDimensionOne) {
     std::vector<predicates::Point3> points;
+    points.reserve(8);
     for (int t = 0; t < 8; ++t) {
         points.push_back({double(t), double(2 * t), double(3 * t)});
     }

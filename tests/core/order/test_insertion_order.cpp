@@ -169,6 +169,7 @@ TEST(HilbertSort, OnlyTheOrderOfCoordinatesMatters) {
 
 TEST(HilbertSort, FlatAndDuplicatedSetsAndDeterminism) {
     std::vector<Point3> flat;
+    flat.reserve(1000);
     for (int i = 0; i < 1000; ++i) {
         flat.push_back({static_cast<double>(i % 37), 5.0, static_cast<double>(i % 11)});
     }
@@ -260,8 +261,9 @@ TEST(Brio, RoundsAreHilbertSortedAndAlternate) {
         for (std::size_t r = 0; r < order.round_begin.size(); ++r) {
             const std::size_t end =
                 r + 1 < order.round_begin.size() ? order.round_begin[r + 1] : cube.size();
-            std::vector<std::uint32_t> round(order.sequence.begin() + order.round_begin[r],
-                                             order.sequence.begin() + end);
+            std::vector<std::uint32_t> round(
+                order.sequence.begin() + static_cast<std::ptrdiff_t>(order.round_begin[r]),
+                order.sequence.begin() + static_cast<std::ptrdiff_t>(end));
             std::vector<std::uint32_t> expected = round;
             hilbert_sort(cube.points, expected);
             if (alternate && r % 2 == 0) {
