@@ -180,6 +180,16 @@ def early_part(source, n):
     return early, int(found.group(1)) if found else None
 
 
+def prefix_cost(source):
+    """The theorem-prefix table's engine time, as a sentence (empty without the table)."""
+    rows = read(os.path.join(source, "theorem-prefix.csv")) or []
+    if not rows:
+        return ""
+    total = sum(float(r["time_s"]) for r in rows)
+    return (f" The `theorem-prefix` table: {len(rows)} runs, {fmt(total / 60, 1)} min of engine "
+            "time in all.")
+
+
 def stratified(whole, early):
     """Σj/n as two independent strata: the early insertions' mean over the prefix seeds that the
     whole runs do not use, plus the rest's mean over the whole runs' seeds (a whole run's Σj/n
@@ -302,7 +312,7 @@ def theorem_section(inp, paper=None):
     out.append("*Cost (generated).* Engine time with every conflict counted, summed over the "
                "table's runs: " + ", ".join(f"n = {n}: {fmt(seconds[n] / 60, 1)} min" for n in ns)
                + f" ({fmt(sum(seconds.values()) / 3600, 2)} CPU-hours in all; the runs shared a "
-               "2-core machine with other jobs).")
+               "2-core machine with other jobs)." + prefix_cost(source))
     out.append("")
     if not fits:
         out.append("*Fit.* Fewer than four sizes with two seeds each: no fit (the paper tier "
