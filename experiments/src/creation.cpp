@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "cavity/core/delaunay/conflict_reach.h"
 #include "cavity/core/live/triangulate.h"
 #include "cavity/experiments/life_cycle.h"
 #include "cavity/perturbation/sos.h"
@@ -33,15 +34,21 @@ CreationAudit audit_creation(const core::PointSet& points,
         for (std::uint32_t v : t) {
             last_trigger = std::max(last_trigger, observer.rank_of_input(v));
         }
+        // A squared distance to a certified circumcentre decides all but the points near the
+        // sphere; those get the exact perturbed insphere test.
+        const core::ConflictReach reach =
+            core::conflict_reach({p[t[0]], p[t[1]], p[t[2]], p[t[3]]});
         std::uint64_t j = 0;
         std::uint32_t first_stopper = std::numeric_limits<std::uint32_t>::max();
         for (std::uint32_t y = 0; y < n; ++y) {
-            if (y == t[0] || y == t[1] || y == t[2] || y == t[3]) {
+            const double d = reach.squared_distance(p[y]);
+            if (reach.excludes_squared(d) || y == t[0] || y == t[1] || y == t[2] || y == t[3]) {
                 continue;
             }
-            if (perturbation::insphere_sos(
+            if (reach.includes_squared(d) ||
+                perturbation::insphere_sos(
                     p[t[0]], p[t[1]], p[t[2]], p[t[3]], p[y], {t[0], t[1], t[2], t[3], y}) ==
-                predicates::Sign::kPos) {
+                    predicates::Sign::kPos) {
                 ++j;
                 first_stopper = std::min(first_stopper, observer.rank_of_input(y));
             }

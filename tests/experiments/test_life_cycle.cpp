@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <limits>
+#include <map>
 
 #include <gtest/gtest.h>
 
@@ -7,6 +8,7 @@
 #include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/experiments/creation.h"
+#include "cavity/experiments/jtets.h"
 #include "cavity/experiments/life_cycle.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"
@@ -151,6 +153,29 @@ TEST(LifeCycle, AuditFindsNoViolationAndCountsEveryCreatedTetrahedron) {
                             core::BootstrapRule::kFirst)
                         .lives)
                   .size());
+}
+
+// The audit decides most points by a squared distance to a certified circumcentre: its j must
+// be the exact perturbed count of every created tetrahedron, on cospherical grids too.
+TEST(LifeCycle, AuditCountsEqualTheExactCircumballCounts) {
+    for (const char* dist : {"cube", "grid", "sphere"}) {
+        const core::PointSet points = core::generate_points(dist, 80, 3);
+        core::OrderOptions options;
+        options.kind = core::OrderKind::kRandom;
+        options.seed = 11;
+        const auto sequence = core::make_insertion_order(points.points, options).sequence;
+        const CreationAudit audit = audit_creation(points, sequence);
+        std::map<std::uint64_t, std::uint64_t> expected;
+        for (const auto& [tet, created, deleted] : solid(observe(points,
+                                                                 sequence,
+                                                                 core::LocateKind::kWalk,
+                                                                 core::StorageKind::kArray,
+                                                                 core::BootstrapRule::kFirst)
+                                                             .lives)) {
+            ++expected[circumball_count(points.points, tet, true)];
+        }
+        EXPECT_EQ(audit.created_by_j, expected) << dist;
+    }
 }
 
 }  // namespace

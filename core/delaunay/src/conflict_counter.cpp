@@ -2,189 +2,24 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "cavity/core/delaunay/conflict_reach.h"
 #include "cavity/predicates/orient3d.h"
 
 namespace cavity::core {
 
 namespace {
 
-constexpr double kUnit = std::numeric_limits<double>::epsilon() / 2;
-// Inside these magnitudes no square or product of three lengths below overflows or loses its
-// relative accuracy to underflow; outside them the counter tests every point exactly instead.
-constexpr double kLargest = 1e100;
-constexpr double kSmallestVolume = 1e-200;
-// Generous allowance for the few roundings of a distance (each a relative error below 4 units).
-constexpr double kDistanceSlack = 1e-14;
-
-double det3(const double m[3][3]) {
-    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
-
-double permanent3(const double m[3][3]) {
-    const auto a = [&](int i, int j) { return std::fabs(m[i][j]); };
-    return a(0, 0) * (a(1, 1) * a(2, 2) + a(1, 2) * a(2, 1)) +
-           a(0, 1) * (a(1, 0) * a(2, 2) + a(1, 2) * a(2, 0)) +
-           a(0, 2) * (a(1, 0) * a(2, 1) + a(1, 1) * a(2, 0));
-}
-
-double max_abs(const Point3& p) {
-    return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
-}
-
-/// A ball certain to hold every point in conflict with a solid tetrahedron, or `bounded` false
-/// when no such ball can be certified in floating point; and, for unweighted points, a concentric
-/// ball certain to hold only conflicts (`inner`, negative when none is certified). A point
-/// strictly inside the circumsphere conflicts whatever the perturbation, and no inserted point
-/// can be (the tetrahedron is Delaunay when created), so every point of a box inside the inner
-/// ball is an uninserted conflict: such boxes are counted whole.
-struct Reach {
-    bool bounded = false;
-    Point3 centre{};
-    double radius = 0;
-    double inner = -1;
-    // The two radii squared, rounded toward the safe side by far more than the few roundings
-    // of a squared distance (relative error below 6 units): points are tested without a root.
-    double radius_squared = std::numeric_limits<double>::infinity();
-    double inner_squared = -1;
-
-    void square_radii() {
-        radius_squared = bounded ? radius * radius * (1 + 4 * kDistanceSlack)
-                                 : std::numeric_limits<double>::infinity();
-        inner_squared = inner > 0 ? inner * inner * (1 - 4 * kDistanceSlack) : -1;
+ConflictReach reach_of_tet(const Geometry& g, const TetVertices& t, double max_weight) {
+    const std::array<Point3, 4> v{g.point(t[0]), g.point(t[1]), g.point(t[2]), g.point(t[3])};
+    if (!g.weighted()) {
+        return conflict_reach(v);
     }
-
-    /// True when every point of a box with these corners has a squared distance the tests can
-    /// trust (no coordinate beyond kLargest).
-    static bool moderate(const Box3& b) {
-        return std::max(max_abs(b.lo), max_abs(b.hi)) <= kLargest;
+    std::array<double, 4> w{};
+    for (std::size_t i = 0; i < 4; ++i) {
+        w[i] = g.weighted_point(t[i]).w;
     }
-
-    bool includes_squared(double computed) const {
-        return std::isfinite(computed) && computed < inner_squared;
-    }
-
-    bool excludes_squared(double computed) const {
-        return std::isfinite(computed) && computed > radius_squared;
-    }
-
-    /// The computed squared distance from the centre, or NaN (which every test above declines)
-    /// where the coordinates are too large for the error bounds.
-    double squared_distance(const Point3& q) const {
-        if (max_abs(q) > kLargest) {
-            return std::numeric_limits<double>::quiet_NaN();
-        }
-        const double dx = q.x - centre.x;
-        const double dy = q.y - centre.y;
-        const double dz = q.z - centre.z;
-        return dx * dx + dy * dy + dz * dz;
-    }
-
-    bool includes(const Box3& b) const {
-        if (inner <= 0 || std::max(max_abs(b.lo), max_abs(b.hi)) > kLargest) {
-            return false;
-        }
-        // The farthest corner, per axis.
-        const double dx = std::max(std::fabs(centre.x - b.lo.x), std::fabs(centre.x - b.hi.x));
-        const double dy = std::max(std::fabs(centre.y - b.lo.y), std::fabs(centre.y - b.hi.y));
-        const double dz = std::max(std::fabs(centre.z - b.lo.z), std::fabs(centre.z - b.hi.z));
-        return includes_squared(dx * dx + dy * dy + dz * dz);
-    }
-
-    bool excludes(const Box3& b) const {
-        if (std::max(max_abs(b.lo), max_abs(b.hi)) > kLargest) {
-            return false;
-        }
-        const auto gap = [](double c, double lo, double hi) {
-            return c < lo ? lo - c : c > hi ? c - hi : 0.0;
-        };
-        const double dx = gap(centre.x, b.lo.x, b.hi.x);
-        const double dy = gap(centre.y, b.lo.y, b.hi.y);
-        const double dz = gap(centre.z, b.lo.z, b.hi.z);
-        return excludes_squared(dx * dx + dy * dy + dz * dz);
-    }
-};
-
-/// The circumcentre (weighted: the orthocentre) c = a + x solves 2 (v_i - a) . x = |v_i - a|^2 -
-/// w_i + w_a for the three other vertices. Cramer's rule in floating point has a forward error
-/// bounded through the permanents (absolute-value determinants) of the systems, as in Shewchuk's
-/// filters: each determinant is off by at most 16 units of its permanent here (7 for its
-/// evaluation, the rest for the rounded differences and squares it is built from; 32 for the
-/// right-hand side's column). A point q conflicts when |q - c|^2 < |x|^2 - w_a + w_q, so no point
-/// farther from the computed centre than the bound below can.
-Reach conflict_reach(const Geometry& g, const TetVertices& t, double max_weight) {
-    Reach reach;
-    const Point3& a = g.point(t[0]);
-    if (max_abs(a) > kLargest) {
-        return reach;
-    }
-    const double wa = g.weighted() ? g.weighted_point(t[0]).w : 0.0;
-    double p[3][3];
-    double rhs[3];
-    double rhs_abs[3];
-    for (int i = 0; i < 3; ++i) {
-        const Point3& v = g.point(t[static_cast<std::size_t>(i) + 1]);
-        if (max_abs(v) > kLargest) {
-            return reach;
-        }
-        p[i][0] = v.x - a.x;
-        p[i][1] = v.y - a.y;
-        p[i][2] = v.z - a.z;
-        const double square = p[i][0] * p[i][0] + p[i][1] * p[i][1] + p[i][2] * p[i][2];
-        const double wv =
-            g.weighted() ? g.weighted_point(t[static_cast<std::size_t>(i) + 1]).w : 0.0;
-        rhs[i] = (square - (wv - wa)) / 2;
-        rhs_abs[i] = (square + std::fabs(wv) + std::fabs(wa)) / 2;
-    }
-    const double d = det3(p);
-    const double d_error = 16 * kUnit * permanent3(p);
-    if (!std::isfinite(d) || !(std::fabs(d) > 4 * d_error) || std::fabs(d) < kSmallestVolume) {
-        return reach;
-    }
-    double x[3];
-    double x_error_squared = 0;
-    for (int k = 0; k < 3; ++k) {
-        double m[3][3];
-        double m_abs[3][3];
-        for (int i = 0; i < 3; ++i) {
-            for (int c = 0; c < 3; ++c) {
-                m[i][c] = c == k ? rhs[i] : p[i][c];
-                m_abs[i][c] = c == k ? rhs_abs[i] : p[i][c];
-            }
-        }
-        const double n = det3(m);
-        x[k] = n / d;
-        const double e = (32 * kUnit * permanent3(m_abs) + std::fabs(x[k]) * d_error) /
-                             (std::fabs(d) - d_error) +
-                         2 * kUnit * std::fabs(x[k]);
-        x_error_squared += e * e;
-    }
-    const double x_error = std::sqrt(x_error_squared) * (1 + kDistanceSlack);
-    const double x_norm = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) * (1 + kDistanceSlack);
-    reach.centre = {a.x + x[0], a.y + x[1], a.z + x[2]};
-    // The centre's own rounding: one addition per coordinate.
-    const double centre_error = x_error + 2 * kUnit * (max_abs(a) + max_abs(reach.centre));
-    double reach_squared = (x_norm + x_error) * (x_norm + x_error);
-    if (g.weighted()) {
-        reach_squared = reach_squared - wa + max_weight;
-        reach_squared +=
-            kDistanceSlack * (std::fabs(reach_squared) + std::fabs(wa) + std::fabs(max_weight));
-    }
-    reach.radius =
-        (reach_squared > 0 ? std::sqrt(reach_squared) : 0.0) * (1 + kDistanceSlack) + centre_error;
-    reach.bounded = std::isfinite(reach.radius) && max_abs(reach.centre) <= kLargest &&
-                    reach.radius <= kLargest;
-    if (reach.bounded && !g.weighted()) {
-        // The true radius is at least |x| - x_error (|x| computed with a relative error under
-        // the slack), and the true centre within centre_error of the computed one.
-        const double x_norm_low = x_norm * (1 - 2 * kDistanceSlack);
-        reach.inner = (x_norm_low - x_error) * (1 - kDistanceSlack) - centre_error;
-    }
-    reach.square_radii();
-    return reach;
+    return conflict_reach(v, w, max_weight);
 }
 
 }  // namespace
@@ -216,7 +51,7 @@ void ConflictCountingObserver::on_start(const Geometry& geometry) {
 }
 
 std::uint64_t ConflictCountingObserver::count_solid(const TetVertices& v) {
-    const Reach reach = conflict_reach(*geometry_, v, max_weight_);
+    const ConflictReach reach = reach_of_tet(*geometry_, v, max_weight_);
     std::uint64_t j = 0;
     std::uint64_t tests = 0;
     const auto test_exactly = [&](std::uint32_t id, const Point3& q) {
@@ -238,7 +73,7 @@ std::uint64_t ConflictCountingObserver::count_solid(const TetVertices& v) {
         [&](const Box3& box) { return !reach.bounded || !reach.excludes(box); },
         [&](const Box3& box) { return reach.includes(box); },
         [&](const Box3& box, std::span<const std::uint32_t> ids, std::span<const Point3> points) {
-            if (!Reach::moderate(box)) {
+            if (!ConflictReach::moderate(box)) {
                 for (std::size_t k = 0; k < ids.size(); ++k) {
                     test_exactly(ids[k], points[k]);
                 }
