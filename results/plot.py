@@ -130,7 +130,7 @@ def plot_jtets(inp, out, md):
 def plot_creation(inp, out, md):
     rows = read(os.path.join(inp, "creation.j.csv"))
     runs = read(os.path.join(inp, "creation.csv"))
-    if rows is None:
+    if rows is None or runs is None or "created_sd" not in rows[0]:
         return
     fig, ax = plt.subplots(figsize=(7, 4.5))
     md.append("## creation (Propositions 5.2, 5.3)\n")
@@ -143,20 +143,31 @@ def plot_creation(inp, out, md):
     md.append("|---|---|---|---|---|---|---|---|")
     for (order,), rs in sorted(group(rows, "order").items()):
         R = int(next(r for r in runs if r["order"] == order)["orders"])
-        js, y, err = [], [], []
+        # The point sets pooled: q̂_j = Σ created / (R Σ f_j); each set's created count per order
+        # has its own standard deviation over the orders (the orders are independent, the
+        # tetrahedra of one order are not).
+        pooled = defaultdict(lambda: [0.0, 0.0, 0.0, 0.0])
         for r in rs:
-            j, f, c = int(r["j"]), num(r, "f_j"), num(r, "created")
-            q0 = num(r, "q_uniform")
-            if j == 0 or f * R * q0 < 20:
+            acc = pooled[int(r["j"])]
+            acc[0] += num(r, "f_j")
+            acc[1] += num(r, "created")
+            acc[2] += num(r, "created_sd") ** 2 / R
+            acc[3] = num(r, "q_uniform")
+        js, y, err = [], [], []
+        for j, (f, c, variance, q0) in sorted(pooled.items()):
+            if j == 0 or f * R * q0 < 100 or variance == 0:
                 continue
             q = c / (R * f)
+            se = math.sqrt(variance) / f
             js.append(j)
             y.append(q * j**4)
-            err.append(math.sqrt(max(c, 1)) / (R * f) * j**4)
-            z = (c - R * f * q0) / math.sqrt(R * f * q0 * (1 - q0))
+            err.append(Z95 * se * j**4)
+            z = (q - q0) / se
             if j in (1, 2, 3, 4, 6, 8, 12, 16, 24, 32):
                 md.append(f"| {order} | {j} | {int(f)} | {int(c)} | {q:.3e} | {q0:.3e} | {z:+.2f} | {q * j**4:.1f} |")
-        ax.errorbar(js, y, yerr=err, fmt="o", ms=3, label=f"{order} order (measured)")
+        style = "o" if order == "random" else "s"
+        ax.errorbar(js, y, yerr=err, fmt=style, ms=3, capsize=2,
+                    label=f"{order} order (measured, 95 % interval)")
     j = np.arange(1, 60)
     ax.plot(j, 24 * j**4 / ((j + 1) * (j + 2) * (j + 3) * (j + 4)), "k-", lw=1,
             label=r"uniform: $j^4/\binom{j+4}{4}$")

@@ -100,3 +100,43 @@ def least_squares(columns, ys):
     for i in reversed(range(m)):
         x[i] = (b[i] - sum(a[i][j] * x[j] for j in range(i + 1, m))) / a[i][i]
     return x
+
+
+def chi2_sf(x, k):
+    """P(χ²_k ≥ x): the regularized upper incomplete gamma Q(k/2, x/2), by its series below
+    a + 1 and by Lentz's continued fraction above (Numerical Recipes §6.2)."""
+    if x != x:
+        return float("nan")
+    if x == math.inf:
+        return 0.0
+    a, y = k / 2, x / 2
+    if y <= 0:
+        return 1.0
+    log_front = a * math.log(y) - y - math.lgamma(a)
+    if y < a + 1:
+        term = total = 1 / a
+        n = a
+        while abs(term) > 1e-16 * abs(total):
+            n += 1
+            term *= y / n
+            total += term
+        return max(0.0, 1 - total * math.exp(log_front))
+    tiny = 1e-300
+    b = y + 1 - a
+    c, d = 1 / tiny, 1 / b
+    h = d
+    i = 1
+    while True:
+        an = -i * (i - a)
+        b += 2
+        d = an * d + b
+        d = tiny if abs(d) < tiny else d
+        c = b + an / c
+        c = tiny if abs(c) < tiny else c
+        d = 1 / d
+        delta = d * c
+        h *= delta
+        i += 1
+        if abs(delta - 1) < 1e-16 or i > 10000:
+            break
+    return math.exp(log_front) * h
