@@ -148,7 +148,7 @@ RunOutput deletion(const Suite& suite, const TierSettings& tier, const RunSpec& 
         const Star star = star_of(storage, v);
         core::RetriangulationCounters one;
         const auto start = Clock::now();
-        core::delete_vertex(storage, geometry, v, {}, &one);
+        core::delete_vertex(storage, geometry, v, {}, one);
         delete_s += seconds_since(start);
         gone[v] = true;
         hull_deletions += star.hull ? 1 : 0;

@@ -52,8 +52,8 @@ std::size_t cavity_size(const core::PointSet& points,
             continue;
         }
         const core::TetVertices& v = storage.vertices(t);
-        count += core::is_ghost(v) ? geometry.conflicts_ghost(v, last, inside, nullptr)
-                                   : geometry.conflicts_solid(v, last, nullptr);
+        count += core::is_ghost(v) ? geometry.conflicts_ghost(v, last, inside)
+                                   : geometry.conflicts_solid(v, last);
     }
     return count;
 }

@@ -102,11 +102,8 @@ LiveCdt::Carrier LiveCdt::locate(const Point3& p) {
         },
         [&](TetId, const TetVertices& v, int f, int entered) {
             const auto tri = facet_vertices(v, f);
-            const Sign s = Geometry::orient3d(geometry_.point(tri[0]),
-                                              geometry_.point(tri[1]),
-                                              geometry_.point(tri[2]),
-                                              p,
-                                              nullptr);
+            const Sign s = Geometry::orient3d(
+                geometry_.point(tri[0]), geometry_.point(tri[1]), geometry_.point(tri[2]), p);
             if (s == Sign::kNeg && f != entered) {
                 return true;
             }
@@ -127,13 +124,13 @@ bool LiveCdt::conflicts(TetId t, VertexId u) {
     ++counters_.conflict_tests;
     const TetVertices& v = storage_.vertices(t);
     if (!is_ghost(v)) {
-        return geometry_.conflicts_solid(v, u, nullptr);
+        return geometry_.conflicts_solid(v, u);
     }
     // The coplanar case needs a vertex strictly behind the hull triangle: the solid apex.
     const HalfFacet behind = storage_.adjacent(t, 3);
     const VertexId apex =
         storage_.vertices(tet_of(behind))[static_cast<std::size_t>(facet_of(behind))];
-    return geometry_.conflicts_ghost(v, u, {apex, apex, apex, apex}, nullptr);
+    return geometry_.conflicts_ghost(v, u, {apex, apex, apex, apex});
 }
 
 /// DigCavity with constraints (§5.7): the dig of Bowyer–Watson (dig_cavity.h) with the polygon
@@ -329,7 +326,7 @@ std::string LiveCdt::through_cavity(const Cavity& cavity, const Carrier& carrier
 std::string LiveCdt::not_star_shaped(const Cavity& cavity, const Star& star) const {
     const auto in_front = [&](const TetVertices& ghost, VertexId w) {
         return w != kGhostVertex &&
-               geometry_.orient3d(ghost[0], ghost[1], ghost[2], w, nullptr) == Sign::kPos;
+               geometry_.orient3d(ghost[0], ghost[1], ghost[2], w) == Sign::kPos;
     };
     const auto hull_name = [&](const TetVertices& g) {
         return "the cavity is not star-shaped from the new vertex: the new hull triangle " +
@@ -346,7 +343,7 @@ std::string LiveCdt::not_star_shaped(const Cavity& cavity, const Star& star) con
             }
             continue;
         }
-        const Sign s = geometry_.orient3d(v[0], v[1], v[2], v[3], nullptr);
+        const Sign s = geometry_.orient3d(v[0], v[1], v[2], v[3]);
         if (s != Sign::kPos) {
             const Triangle tri =
                 facet_vertices(storage_.vertices(cavity.faces[n].inner), cavity.faces[n].facet);
@@ -393,7 +390,7 @@ std::string LiveCdt::not_delaunay(const Star& star, const std::vector<PolygonTri
             continue;
         }
         ++counters_.face_tests;
-        if (geometry_.conflicts_solid(a, b[static_cast<std::size_t>(facet_of(h2))], nullptr)) {
+        if (geometry_.conflicts_solid(a, b[static_cast<std::size_t>(facet_of(h2))])) {
             return "the new face " + triangle_name(face) +
                    " is not locally Delaunay (a vertex hidden from the cavity by a polygon lies "
                    "in a new tetrahedron's circumball): no CDT keeps the rest of the mesh";

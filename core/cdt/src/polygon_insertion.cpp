@@ -247,14 +247,14 @@ private:
             const VertexId a = sigma[static_cast<std::size_t>(slots[k])];
             const VertexId b = sigma[static_cast<std::size_t>(slots[(k + 1) % 3])];
             const VertexId c = sigma[static_cast<std::size_t>(slots[(k + 2) % 3])];
-            const Sign sc = geometry_.orient3d(a, b, p, c, nullptr);
-            const Sign sq = geometry_.orient3d(a, b, p, e.apex, nullptr);
+            const Sign sc = geometry_.orient3d(a, b, p, c);
+            const Sign sq = geometry_.orient3d(a, b, p, e.apex);
             where[k] = sq == Sign::kZero ? 0 : sq == sc ? 1 : -1;
         }
         const int beyond = static_cast<int>(std::count(where.begin(), where.end(), -1));
         const int on = static_cast<int>(std::count(where.begin(), where.end(), 0));
         if (beyond == 0 && on == 0) {
-            return flip23(storage_, geometry_, half_facet(e.tet, e.facet), &counters_.flips);
+            return flip23(storage_, geometry_, half_facet(e.tet, e.facet), counters_.flips);
         }
         if (beyond + on != 1) {
             return {};
@@ -268,15 +268,14 @@ private:
             return {};
         }
         if (beyond == 1) {
-            return ring.tets.size() == 3
-                       ? flip32(storage_, geometry_, e.tet, i, j, &counters_.flips)
-                       : std::vector<TetId>{};
+            return ring.tets.size() == 3 ? flip32(storage_, geometry_, e.tet, i, j, counters_.flips)
+                                         : std::vector<TetId>{};
         }
         if (ring.tets.size() != 4) {
             return {};
         }
         const auto at = std::find(ring.ring.begin(), ring.ring.end(), p) - ring.ring.begin();
-        return flip44(storage_, geometry_, e.tet, i, j, static_cast<int>(at % 2), &counters_.flips);
+        return flip44(storage_, geometry_, e.tet, i, j, static_cast<int>(at % 2), counters_.flips);
     }
 
     /// Step 4, with inadmissible flips held back until another flip has changed the complex.

@@ -71,7 +71,7 @@ TetId tet_with_edge(const ArrayStorage& storage,
                 continue;
             }
             const auto g = facet_vertices(w, f);
-            if (geometry.orient3d(g[0], g[1], g[2], v, nullptr) == predicates::Sign::kNeg) {
+            if (geometry.orient3d(g[0], g[1], g[2], v) == predicates::Sign::kNeg) {
                 const HalfFacet h = storage.adjacent(t, f);
                 next = h == kNoHalfFacet ? kNoTet : tet_of(h);
             }

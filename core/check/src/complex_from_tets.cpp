@@ -5,6 +5,8 @@
 #include <numeric>
 
 #include "cavity/core/base/error.h"
+#include "cavity/core/io/tet_adjacency.h"
+#include "cavity/core/mesh/star.h"
 
 namespace cavity::core {
 
@@ -25,52 +27,58 @@ std::string tet_name(const TetVertices& t) {
     return "(" + name(t[0]) + " " + name(t[1]) + " " + name(t[2]) + " " + name(t[3]) + ")";
 }
 
-/// Glues every pair of half-facets with the same triangle; returns those left alone.
-std::vector<HalfFacet> glue_pairs(ArrayStorage& storage, TetId begin, TetId end) {
-    std::map<Triangle, HalfFacet> open;
-    for (TetId t = begin; t < end; ++t) {
-        for (int f = 0; f < 4; ++f) {
-            const Triangle key = sorted(facet_vertices(storage.vertices(t), f));
-            const auto [it, inserted] = open.emplace(key, half_facet(t, f));
-            if (inserted) {
-                continue;
-            }
-            if (it->second == kNoHalfFacet) {
-                throw Error("triangle " + name(key[0]) + " " + name(key[1]) + " " + name(key[2]) +
-                            " belongs to more than two tetrahedra");
-            }
-            storage.glue(it->second, half_facet(t, f));
-            it->second = kNoHalfFacet;
-        }
-    }
-    std::vector<HalfFacet> alone;
-    for (const auto& [key, h] : open) {
-        if (h != kNoHalfFacet) {
-            alone.push_back(h);
-        }
-    }
-    return alone;
-}
-
 }  // namespace
 
 ArrayStorage complex_from_tets(std::span<const std::array<std::uint32_t, 4>> tets) {
     ArrayStorage storage;
+    std::vector<Tet> stored;
+    stored.reserve(tets.size());
+    std::size_t point_count = 0;
     for (const auto& t : tets) {
-        storage.add_tetrahedron({t[1], t[0], t[2], t[3]});  // positive volume → orient3d > 0
+        stored.push_back({t[1], t[0], t[2], t[3]});  // positive volume → orient3d > 0
+        storage.add_tetrahedron(stored.back());
+        point_count = std::max<std::size_t>(point_count, *std::max_element(t.begin(), t.end()) + 1);
     }
-    const auto solid_end = static_cast<TetId>(storage.capacity());
-    const std::vector<HalfFacet> boundary = glue_pairs(storage, 0, solid_end);
+    // The one facet matcher (io/tet_adjacency.h) pairs the solid facets; slot t is stored[t].
+    const std::vector<std::int32_t> across = match_facets(stored, point_count, tets);
+    std::vector<HalfFacet> boundary;
+    for (TetId t = 0; t < stored.size(); ++t) {
+        for (int f = 0; f < 4; ++f) {
+            const std::int32_t other = across[4 * std::size_t{t} + static_cast<std::size_t>(f)];
+            if (other < 0) {
+                boundary.push_back(half_facet(t, f));
+                continue;
+            }
+            const auto n = static_cast<TetId>(other);
+            if (n < t) {
+                continue;  // glued from n's side
+            }
+            // n's facet on this triangle is the one opposite its vertex not in t.
+            int g = 0;
+            while (g < 4 && slot_of(stored[t], stored[n][static_cast<std::size_t>(g)]) >= 0) {
+                ++g;
+            }
+            if (g == 4) {
+                throw Error("tetrahedron " + tet_name(tets[t]) + " is listed twice");
+            }
+            storage.glue(half_facet(t, f), half_facet(n, g));
+        }
+    }
+    // Ghosts in the order of their sorted triangles, whatever the input's order of tetrahedra.
+    std::sort(boundary.begin(), boundary.end(), [&](HalfFacet a, HalfFacet b) {
+        return sorted(facet_vertices(storage.vertices(tet_of(a)), facet_of(a))) <
+               sorted(facet_vertices(storage.vertices(tet_of(b)), facet_of(b)));
+    });
     // A ghost over each boundary triangle, facing out: the triangle reversed, ghost in front.
     for (HalfFacet h : boundary) {
         const Triangle tri = facet_vertices(storage.vertices(tet_of(h)), facet_of(h));
         const TetId g = storage.add_tetrahedron({tri[1], tri[0], tri[2], kGhostVertex});
         storage.glue(half_facet(g, 3), h);
     }
-    // The ghosts' own facets (a hull edge and the ghost vertex) pair up among the ghosts; solid
-    // facets are all glued already, so glue_pairs sees only facets 0-2 of ghosts as open.
+    // The ghosts' own facets (a hull edge and the ghost vertex) pair up among the ghosts, by
+    // their hull edge.
     std::map<Triangle, HalfFacet> open;
-    for (TetId g = solid_end; g < storage.capacity(); ++g) {
+    for (auto g = static_cast<TetId>(stored.size()); g < storage.capacity(); ++g) {
         for (int f = 0; f < 3; ++f) {
             const Triangle key = sorted(facet_vertices(storage.vertices(g), f));
             const auto [it, inserted] = open.emplace(key, half_facet(g, f));
@@ -117,7 +125,7 @@ std::vector<std::string> check_complex(const ArrayStorage& storage, const Geomet
                 problems.push_back("tetrahedron " + tet_name(v) + ": ghost vertex not in slot 3");
             }
         }
-        if (!is_ghost(v) && geometry.orient3d(v[0], v[1], v[2], v[3], nullptr) != Sign::kPos) {
+        if (!is_ghost(v) && geometry.orient3d(v[0], v[1], v[2], v[3]) != Sign::kPos) {
             // Named as the API lists it (positive right-hand volume), the stored order mirrored.
             problems.push_back("tetrahedron " + tet_name({v[1], v[0], v[2], v[3]}) +
                                ": volume not positive (right-hand rule)");
@@ -149,7 +157,7 @@ std::vector<std::string> check_complex(const ArrayStorage& storage, const Geomet
             // triangles' third vertices).
             const VertexId apex = w[static_cast<std::size_t>(facet_of(h))];
             if (is_ghost(v) && apex != kGhostVertex &&
-                geometry.orient3d(v[0], v[1], v[2], apex, nullptr) == Sign::kPos) {
+                geometry.orient3d(v[0], v[1], v[2], apex) == Sign::kPos) {
                 problems.push_back("hull triangle of " + tet_name(v) + " has vertex " + name(apex) +
                                    " in front: the hull is not convex");
             }

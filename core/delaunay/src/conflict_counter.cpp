@@ -67,7 +67,7 @@ std::uint64_t ConflictCountingObserver::count_solid(const TetVertices& v) {
             return;
         }
         ++tests;
-        j += geometry_->conflicts_solid(v, id, nullptr) ? 1 : 0;
+        j += geometry_->conflicts_solid(v, id) ? 1 : 0;
     };
     j += tree_->count_leaves(
         [&](const Box3& box) { return !reach.bounded || !reach.excludes(box); },
@@ -144,7 +144,7 @@ std::uint64_t ConflictCountingObserver::count_ghost(const TetVertices& v) {
                               j += front == Sign::kPos ? 1 : 0;
                               return;
                           }
-                          j += geometry_->conflicts_ghost(v, id, kBootstrap, nullptr) ? 1 : 0;
+                          j += geometry_->conflicts_ghost(v, id, kBootstrap) ? 1 : 0;
                       });
     totals.conflict_tests += tests;
     return j;

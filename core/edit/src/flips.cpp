@@ -49,14 +49,14 @@ bool valid_replacement(const ArrayStorage& storage,
     }
     for (const TetVertices& t : new_tets) {
         if (!is_ghost(t)) {
-            if (geometry.orient3d(t[0], t[1], t[2], t[3], nullptr) != Sign::kPos) {
+            if (geometry.orient3d(t[0], t[1], t[2], t[3]) != Sign::kPos) {
                 return false;
             }
             continue;
         }
         for (VertexId x : witnesses) {
             if (x != t[0] && x != t[1] && x != t[2] &&
-                geometry.orient3d(t[0], t[1], t[2], x, nullptr) == Sign::kPos) {
+                geometry.orient3d(t[0], t[1], t[2], x) == Sign::kPos) {
                 return false;
             }
         }
@@ -79,28 +79,24 @@ std::vector<TetId> apply(ArrayStorage& storage,
                          const std::vector<TetId>& old_tets,
                          const std::vector<TetVertices>& new_tets,
                          FlipKind kind,
-                         RetriangulationCounters* counters) {
+                         RetriangulationCounters& counters) {
     std::vector<TetId> ids;
     if (valid_replacement(storage, geometry, old_tets, new_tets)) {
         ids = replace_tetrahedra(storage, old_tets, new_tets);
         CAVITY_EXPENSIVE_CHECK(check_complex(storage, geometry), "the complex after a flip");
     }
-    if (counters != nullptr) {
-        if (ids.empty()) {
-            ++counters->flips_refused;
-        } else {
-            ++counters->flips[static_cast<std::size_t>(kind)];
-            counters->tets_created += new_tets.size();
-            counters->tets_deleted += old_tets.size();
-        }
+    if (ids.empty()) {
+        ++counters.flips_refused;
+    } else {
+        ++counters.flips[static_cast<std::size_t>(kind)];
+        counters.tets_created += new_tets.size();
+        counters.tets_deleted += old_tets.size();
     }
     return ids;
 }
 
-std::vector<TetId> refuse(RetriangulationCounters* counters) {
-    if (counters != nullptr) {
-        ++counters->flips_refused;
-    }
+std::vector<TetId> refuse(RetriangulationCounters& counters) {
+    ++counters.flips_refused;
     return {};
 }
 
@@ -109,7 +105,7 @@ std::vector<TetId> refuse(RetriangulationCounters* counters) {
 std::vector<TetId> flip23(ArrayStorage& storage,
                           const Geometry& geometry,
                           HalfFacet h,
-                          RetriangulationCounters* counters) {
+                          RetriangulationCounters& counters) {
     const TetId t1 = tet_of(h);
     const int f1 = facet_of(h);
     const HalfFacet across = storage.adjacent(t1, f1);
@@ -138,7 +134,7 @@ std::vector<TetId> flip32(ArrayStorage& storage,
                           TetId t,
                           int i,
                           int j,
-                          RetriangulationCounters* counters) {
+                          RetriangulationCounters& counters) {
     const EdgeRing ring = edge_ring(storage, t, i, j);
     if (ring.tets.size() != 3) {
         return refuse(counters);
@@ -153,7 +149,7 @@ std::vector<TetId> flip14(ArrayStorage& storage,
                           const Geometry& geometry,
                           TetId t,
                           VertexId p,
-                          RetriangulationCounters* counters) {
+                          RetriangulationCounters& counters) {
     if (!storage.alive(t)) {
         return refuse(counters);
     }
@@ -168,7 +164,7 @@ std::vector<TetId> flip14(ArrayStorage& storage,
 std::vector<TetId> flip41(ArrayStorage& storage,
                           const Geometry& geometry,
                           VertexId p,
-                          RetriangulationCounters* counters) {
+                          RetriangulationCounters& counters) {
     const std::vector<TetId> star = vertex_star(storage, p);
     if (p == kGhostVertex || star.size() != 4) {
         return refuse(counters);
@@ -194,7 +190,7 @@ std::vector<TetId> flip_ring4(ArrayStorage& storage,
                               const EdgeRing& ring,
                               int diagonal,
                               FlipKind kind,
-                              RetriangulationCounters* counters) {
+                              RetriangulationCounters& counters) {
     const auto at = [&](int k) { return ring.ring[static_cast<std::size_t>(k % 4)]; };
     const VertexId wb = at(diagonal + 2);
     if (at(diagonal) == kGhostVertex || wb == kGhostVertex) {
@@ -219,7 +215,7 @@ std::vector<TetId> flip44(ArrayStorage& storage,
                           int i,
                           int j,
                           int diagonal,
-                          RetriangulationCounters* counters) {
+                          RetriangulationCounters& counters) {
     const EdgeRing ring = edge_ring(storage, t, i, j);
     if (ring.tets.size() != 4 || (diagonal != 0 && diagonal != 1)) {
         return refuse(counters);
@@ -232,7 +228,7 @@ std::vector<TetId> flip22(ArrayStorage& storage,
                           TetId t,
                           int i,
                           int j,
-                          RetriangulationCounters* counters) {
+                          RetriangulationCounters& counters) {
     const EdgeRing ring = edge_ring(storage, t, i, j);
     const auto g = std::find(ring.ring.begin(), ring.ring.end(), kGhostVertex);
     if (ring.tets.size() != 4 || g == ring.ring.end() || ring.u == kGhostVertex ||
@@ -244,7 +240,7 @@ std::vector<TetId> flip22(ArrayStorage& storage,
     const int m = static_cast<int>(g - ring.ring.begin());
     const VertexId wa = ring.ring[static_cast<std::size_t>((m + 1) % 4)];
     const VertexId wb = ring.ring[static_cast<std::size_t>((m + 3) % 4)];
-    if (geometry.orient3d(ring.u, ring.v, wa, wb, nullptr) != Sign::kZero) {
+    if (geometry.orient3d(ring.u, ring.v, wa, wb) != Sign::kZero) {
         return refuse(counters);
     }
     return flip_ring4(storage, geometry, ring, (m + 1) % 2, FlipKind::k22, counters);

@@ -19,7 +19,7 @@ bool contains(const Geometry& g, const TetVertices& t, const Point3& x) {
     for (std::size_t k = 0; k < 4; ++k) {
         std::array<Point3, 4> p{g.point(t[0]), g.point(t[1]), g.point(t[2]), g.point(t[3])};
         p[k] = x;
-        if (Geometry::orient3d(p[0], p[1], p[2], p[3], nullptr) == Sign::kNeg) {
+        if (Geometry::orient3d(p[0], p[1], p[2], p[3]) == Sign::kNeg) {
             return false;
         }
     }
@@ -30,7 +30,7 @@ bool strictly_contains(const Geometry& g, const TetVertices& t, const Point3& x)
     for (std::size_t k = 0; k < 4; ++k) {
         std::array<Point3, 4> p{g.point(t[0]), g.point(t[1]), g.point(t[2]), g.point(t[3])};
         p[k] = x;
-        if (Geometry::orient3d(p[0], p[1], p[2], p[3], nullptr) != Sign::kPos) {
+        if (Geometry::orient3d(p[0], p[1], p[2], p[3]) != Sign::kPos) {
             return false;
         }
     }
@@ -76,7 +76,7 @@ TetVertices seed_tetrahedron(const Geometry& g,
                 continue;
             }
             ++counters.insphere_calls;
-            if (g.conflicts_solid(t, c, nullptr)) {
+            if (g.conflicts_solid(t, c)) {
                 e = c;
                 break;
             }
@@ -90,7 +90,7 @@ TetVertices seed_tetrahedron(const Geometry& g,
         for (std::size_t i = 0; i < 4 && !moved; ++i) {
             TetVertices n = t;
             n[i] = e;
-            if (g.orient3d(n[0], n[1], n[2], n[3], nullptr) == Sign::kPos && contains(g, n, x)) {
+            if (g.orient3d(n[0], n[1], n[2], n[3]) == Sign::kPos && contains(g, n, x)) {
                 t = n;
                 moved = true;
             }
@@ -118,7 +118,7 @@ GiftWrapResult gift_wrap_delaunay(const PointSet& points) {
     const auto boot = find_bootstrap(points.points, candidates);
     TetVertices start{
         candidates[boot[0]], candidates[boot[1]], candidates[boot[2]], candidates[boot[3]]};
-    if (geometry.orient3d(start[0], start[1], start[2], start[3], nullptr) == Sign::kNeg) {
+    if (geometry.orient3d(start[0], start[1], start[2], start[3]) == Sign::kNeg) {
         std::swap(start[0], start[1]);
     }
     const TetVertices seed = seed_tetrahedron(geometry, candidates, start, out.counters);
@@ -155,10 +155,8 @@ std::vector<TetVertices> gift_wrap_cavity(const Geometry& geometry,
                                           std::span<const TetVertices> boundary,
                                           std::span<const VertexId> candidates,
                                           bool ghost_allowed,
-                                          RetriangulationCounters* counters) {
-    RetriangulationCounters local;
-    detail::GiftWrapEngine engine(
-        geometry, candidates, ghost_allowed, counters != nullptr ? *counters : local);
+                                          RetriangulationCounters& counters) {
+    detail::GiftWrapEngine engine(geometry, candidates, ghost_allowed, counters);
     for (const TetVertices& t : boundary) {
         engine.offer(facet_vertices(t, 3), t[3]);
     }

@@ -101,12 +101,12 @@ VertexId GiftWrapEngine::solid_apex(const Triangle& f) {
             continue;
         }
         ++counters_.apex_orient_tests;
-        if (geometry_.orient3d(f[1], f[0], f[2], e, nullptr) != Sign::kPos) {
+        if (geometry_.orient3d(f[1], f[0], f[2], e) != Sign::kPos) {
             continue;
         }
         if (best != kNoVertex) {
             ++counters_.insphere_calls;
-            if (!geometry_.conflicts_solid({f[1], f[0], f[2], best}, e, nullptr)) {
+            if (!geometry_.conflicts_solid({f[1], f[0], f[2], best}, e)) {
                 continue;
             }
         }
@@ -117,20 +117,20 @@ VertexId GiftWrapEngine::solid_apex(const Triangle& f) {
 
 bool GiftWrapEngine::in_outer_halfspace(const TetVertices& ghost, VertexId u) {
     ++counters_.apex_orient_tests;
-    const Sign front = geometry_.orient3d(ghost[0], ghost[1], ghost[2], u, nullptr);
+    const Sign front = geometry_.orient3d(ghost[0], ghost[1], ghost[2], u);
     if (front != Sign::kZero) {
         return front == Sign::kPos;
     }
     // Coplanar: the perturbed in-disk test, with any vertex strictly behind orienting the plane.
     VertexId behind = kNoVertex;
     for (VertexId y : candidates_) {
-        if (geometry_.orient3d(ghost[0], ghost[1], ghost[2], y, nullptr) == Sign::kNeg) {
+        if (geometry_.orient3d(ghost[0], ghost[1], ghost[2], y) == Sign::kNeg) {
             behind = y;
             break;
         }
     }
     for (VertexId y = 0; behind == kNoVertex && y < geometry_.size(); ++y) {
-        if (geometry_.orient3d(ghost[0], ghost[1], ghost[2], y, nullptr) == Sign::kNeg) {
+        if (geometry_.orient3d(ghost[0], ghost[1], ghost[2], y) == Sign::kNeg) {
             behind = y;
         }
     }
@@ -138,7 +138,7 @@ bool GiftWrapEngine::in_outer_halfspace(const TetVertices& ghost, VertexId u) {
         return false;
     }
     ++counters_.insphere_calls;
-    return geometry_.conflicts_ghost_in_plane(ghost, u, behind, nullptr);
+    return geometry_.conflicts_ghost_in_plane(ghost, u, behind);
 }
 
 VertexId GiftWrapEngine::ghost_apex(const TetVertices& partial, VertexId behind_apex) {
@@ -165,7 +165,7 @@ VertexId GiftWrapEngine::ghost_apex(const TetVertices& partial, VertexId behind_
         t[3] = c;
         t = rotate_to_last(t, g);
         if (behind_apex != kNoVertex &&
-            geometry_.orient3d(t[0], t[1], t[2], behind_apex, nullptr) == Sign::kZero &&
+            geometry_.orient3d(t[0], t[1], t[2], behind_apex) == Sign::kZero &&
             same_side_of_line(a, b, geometry_.point(c), z)) {
             continue;
         }

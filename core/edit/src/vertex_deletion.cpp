@@ -17,7 +17,7 @@ std::vector<TetId> delete_vertex(ArrayStorage& storage,
                                  const Geometry& geometry,
                                  VertexId v,
                                  std::span<const VertexId> submerged,
-                                 RetriangulationCounters* counters) {
+                                 RetriangulationCounters& counters) {
     const std::vector<TetId> star = vertex_star(storage, v);
     if (v == kGhostVertex || star.empty()) {
         throw Error(v < geometry.size() ? "point " + std::to_string(geometry.key(v)) +
@@ -50,10 +50,8 @@ std::vector<TetId> delete_vertex(ArrayStorage& storage,
                     ": the gift-wrapped cavity does not match its boundary");
     }
     CAVITY_EXPENSIVE_CHECK(check_complex(storage, geometry), "the complex after a deletion");
-    if (counters != nullptr) {
-        ++counters->vertices_deleted;
-        counters->tets_deleted += star.size();
-    }
+    ++counters.vertices_deleted;
+    counters.tets_deleted += star.size();
     return ids;
 }
 

@@ -9,15 +9,21 @@ Geometry::Geometry(std::vector<Point3> points,
                    std::vector<double> weights)
     : points_(std::move(points)), keys_(std::move(keys)), weights_(std::move(weights)) {}
 
-void Geometry::count(const perturbation::SosVerdict& v,
-                     PredicateKind kind,
-                     Counters* counters) const {
-    counters->count_predicate(kind, v.stage);
-    if (v.cofactors > 0) {
-        ++counters->perturbations;
-        counters->perturbation_cofactors += v.cofactors;
+namespace {
+
+/// A perturbed test's deciding stage and its tie-break's work, when the tally counts.
+template <Tally T>
+void count(const perturbation::SosVerdict& v, PredicateKind kind, T& tally) {
+    if constexpr (T::kCounting) {
+        tally.count_predicate(kind, v.stage);
+        if (v.cofactors > 0) {
+            ++tally.perturbations;
+            tally.perturbation_cofactors += v.cofactors;
+        }
     }
 }
+
+}  // namespace
 
 bool Geometry::tie_breaks_into(const TetVertices& t, VertexId u) const {
     const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
@@ -25,53 +31,56 @@ bool Geometry::tie_breaks_into(const TetVertices& t, VertexId u) const {
                point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys) == Sign::kPos;
 }
 
-bool Geometry::conflicts_solid_exactly(const TetVertices& t, VertexId u, Counters* counters) const {
+template <Tally T>
+bool Geometry::conflicts_solid_exactly(const TetVertices& t, VertexId u, T& tally) const {
     const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
     if (!weighted()) {
-        if (counters == nullptr) {
+        if constexpr (!T::kCounting) {
             return perturbation::insphere_sos(
                        point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys) ==
                    Sign::kPos;
         }
         const auto v = perturbation::insphere_sos_staged(
             point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys);
-        count(v, PredicateKind::kInsphere, counters);
+        count(v, PredicateKind::kInsphere, tally);
         return v.sign == Sign::kPos;
     }
     const auto a = weighted_point(t[0]), b = weighted_point(t[1]), c = weighted_point(t[2]),
                d = weighted_point(t[3]), e = weighted_point(u);
-    if (counters == nullptr) {
+    if constexpr (!T::kCounting) {
         return perturbation::orient4d_sos(a, b, c, d, e, keys) == Sign::kPos;
     }
     const auto v = perturbation::orient4d_sos_staged(a, b, c, d, e, keys);
-    count(v, PredicateKind::kOrient4d, counters);
+    count(v, PredicateKind::kOrient4d, tally);
     return v.sign == Sign::kPos;
 }
 
+template <Tally T>
 bool Geometry::conflicts_ghost(const TetVertices& t,
                                VertexId u,
                                const std::array<VertexId, 4>& interior,
-                               Counters* counters) const {
+                               T& tally) const {
     // In front of the hull triangle: a conflict whatever the weights (the new point becomes a hull
     // vertex). Behind it: none. Only a coplanar point needs the in-plane (perturbed) disk test.
-    const Sign front = orient3d(t[0], t[1], t[2], u, counters);
+    const Sign front = orient3d(t[0], t[1], t[2], u, tally);
     if (front != Sign::kZero) {
         return front == Sign::kPos;
     }
     VertexId behind = interior[0];
     for (VertexId y : interior) {
-        if (orient3d(t[0], t[1], t[2], y, counters) == Sign::kNeg) {
+        if (orient3d(t[0], t[1], t[2], y, tally) == Sign::kNeg) {
             behind = y;
             break;
         }
     }
-    return conflicts_ghost_in_plane(t, u, behind, counters);
+    return conflicts_ghost_in_plane(t, u, behind, tally);
 }
 
+template <Tally T>
 bool Geometry::conflicts_ghost_in_plane(const TetVertices& t,
                                         VertexId u,
                                         VertexId behind,
-                                        Counters* counters) const {
+                                        T& tally) const {
     const perturbation::Keys4 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[u]};
     perturbation::SosVerdict v;
     if (!weighted()) {
@@ -85,10 +94,28 @@ bool Geometry::conflicts_ghost_in_plane(const TetVertices& t,
                                                               weighted_point(u),
                                                               keys);
     }
-    if (counters != nullptr) {
-        count(v, PredicateKind::kGhost, counters);
-    }
+    count(v, PredicateKind::kGhost, tally);
     return v.sign == Sign::kPos;
 }
+
+// The two tallies there are (counters.h).
+template bool Geometry::conflicts_solid_exactly(const TetVertices&, VertexId, Uncounted&) const;
+template bool Geometry::conflicts_solid_exactly(const TetVertices&, VertexId, Counters&) const;
+template bool Geometry::conflicts_ghost(const TetVertices&,
+                                        VertexId,
+                                        const std::array<VertexId, 4>&,
+                                        Uncounted&) const;
+template bool Geometry::conflicts_ghost(const TetVertices&,
+                                        VertexId,
+                                        const std::array<VertexId, 4>&,
+                                        Counters&) const;
+template bool Geometry::conflicts_ghost_in_plane(const TetVertices&,
+                                                 VertexId,
+                                                 VertexId,
+                                                 Uncounted&) const;
+template bool Geometry::conflicts_ghost_in_plane(const TetVertices&,
+                                                 VertexId,
+                                                 VertexId,
+                                                 Counters&) const;
 
 }  // namespace cavity::core

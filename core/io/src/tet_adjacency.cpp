@@ -62,19 +62,16 @@ void sort_by_rank(std::span<const Tet> tets,
 
 }  // namespace
 
-Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32_t> rank) {
+std::vector<std::int32_t> match_facets(std::span<const Tet> tets,
+                                       std::size_t point_count,
+                                       std::span<const Tet> names) {
     const std::size_t m = tets.size();
-    const std::size_t point_count = rank.size();
-    Adjacency out;
-    std::vector<Tet> ranked;
-    sort_by_rank(tets, rank, ranked, out.simplices);
-    out.neighbors.assign(4 * m, -1);
-    out.vertex_to_simplex.assign(point_count, -1);
+    std::vector<std::int32_t> neighbors(4 * m, -1);
 
-    // Counting sort of the half-facets by their lowest-ranked vertex. Each entry carries its key
-    // (the two other ranks) so that pairing reads the buckets sequentially, never the tetrahedra.
+    // Counting sort of the half-facets by their lowest vertex. Each entry carries its key (the
+    // two other vertices) so that pairing reads the buckets sequentially, never the tetrahedra.
     std::vector<std::uint32_t> begin(point_count + 1, 0);
-    for (const Tet& t : ranked) {
+    for (const Tet& t : tets) {
         for (int f = 0; f < 4; ++f) {
             ++begin[sorted_facet(t, f).lowest + 1];
         }
@@ -86,7 +83,7 @@ Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32
         std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
         for (std::size_t t = 0; t < m; ++t) {
             for (int f = 0; f < 4; ++f) {
-                const SortedFacet facet = sorted_facet(ranked[t], f);
+                const SortedFacet facet = sorted_facet(tets[t], f);
                 const std::uint32_t slot = fill[facet.lowest]++;
                 keys[slot] = facet.rest;
                 halves[slot] = static_cast<std::uint32_t>(4 * t) + static_cast<std::uint32_t>(f);
@@ -131,16 +128,27 @@ Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32
                 continue;
             }
             if (slot.half == kPaired) {
-                const Tet& t = out.simplices[h >> 2];
+                const Tet& t = (names.empty() ? tets : names)[h >> 2];
                 throw Error("not a manifold: a triangle of tetrahedron (" + std::to_string(t[0]) +
                             ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ", " +
                             std::to_string(t[3]) + ") has more than two tetrahedra");
             }
-            out.neighbors[slot.half] = static_cast<std::int32_t>(h >> 2);
-            out.neighbors[h] = static_cast<std::int32_t>(slot.half >> 2);
+            neighbors[slot.half] = static_cast<std::int32_t>(h >> 2);
+            neighbors[h] = static_cast<std::int32_t>(slot.half >> 2);
             slot.half = kPaired;
         }
     }
+    return neighbors;
+}
+
+Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32_t> rank) {
+    const std::size_t m = tets.size();
+    const std::size_t point_count = rank.size();
+    Adjacency out;
+    std::vector<Tet> ranked;
+    sort_by_rank(tets, rank, ranked, out.simplices);
+    out.neighbors = match_facets(ranked, point_count, out.simplices);
+    out.vertex_to_simplex.assign(point_count, -1);
 
     for (std::size_t t = 0; t < m; ++t) {
         const Tet& tet = out.simplices[t];

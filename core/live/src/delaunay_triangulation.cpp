@@ -175,8 +175,7 @@ TetId DelaunayTriangulation::locate(const Point3& p) const {
     return state_->walk.locate(engine(*state_), p, start_tet());
 }
 
-void DelaunayTriangulation::remove(std::span<const std::uint32_t> ids,
-                                   RetriangulationCounters* counters) {
+void DelaunayTriangulation::remove(std::span<const std::uint32_t> ids) {
     State& s = *state_;
     const auto numbered = [&](std::uint32_t id) {
         return std::to_string(std::int64_t{id} + s.index_base);
@@ -247,7 +246,7 @@ void DelaunayTriangulation::remove(std::span<const std::uint32_t> ids,
             continue;
         }
         const std::vector<TetId> fresh =
-            delete_vertex(s.storage, s.geometry, v, s.submerged, counters);
+            delete_vertex(s.storage, s.geometry, v, s.submerged, s.edits);
         // Submerged points that the deletion uncovered are vertices now.
         std::erase_if(s.submerged, [&](VertexId w) {
             return std::any_of(fresh.begin(), fresh.end(), [&](TetId t) {
@@ -270,19 +269,17 @@ void DelaunayTriangulation::restart_after_edit() {
     }
 }
 
-std::vector<TetId> DelaunayTriangulation::flip23(HalfFacet h, RetriangulationCounters* counters) {
-    std::vector<TetId> fresh = core::flip23(state_->storage, state_->geometry, h, counters);
+std::vector<TetId> DelaunayTriangulation::flip23(HalfFacet h) {
+    std::vector<TetId> fresh = core::flip23(state_->storage, state_->geometry, h, state_->edits);
     if (!fresh.empty()) {
         restart_after_edit();
     }
     return fresh;
 }
 
-std::vector<TetId> DelaunayTriangulation::flip32(TetId t,
-                                                 int i,
-                                                 int j,
-                                                 RetriangulationCounters* counters) {
-    std::vector<TetId> fresh = core::flip32(state_->storage, state_->geometry, t, i, j, counters);
+std::vector<TetId> DelaunayTriangulation::flip32(TetId t, int i, int j) {
+    std::vector<TetId> fresh =
+        core::flip32(state_->storage, state_->geometry, t, i, j, state_->edits);
     if (!fresh.empty()) {
         restart_after_edit();
     }
@@ -410,6 +407,10 @@ std::vector<std::uint32_t> DelaunayTriangulation::redundant() const {
 
 const Counters& DelaunayTriangulation::counters() const {
     return state_->counters;
+}
+
+const RetriangulationCounters& DelaunayTriangulation::edit_counters() const {
+    return state_->edits;
 }
 
 const Geometry& DelaunayTriangulation::geometry() const {

@@ -54,7 +54,7 @@ BruteForce brute_force(const LoggingCounter& log) {
                 continue;
             }
             if (is_ghost(v)) {
-                j += g.conflicts_ghost(v, y, {0, 1, 2, 3}, nullptr) ? 1 : 0;
+                j += g.conflicts_ghost(v, y, {0, 1, 2, 3}) ? 1 : 0;
             } else if (!g.weighted()) {
                 const perturbation::Keys5 keys{
                     g.key(v[0]), g.key(v[1]), g.key(v[2]), g.key(v[3]), g.key(y)};
@@ -65,7 +65,7 @@ BruteForce brute_force(const LoggingCounter& log) {
                                                 g.point(y),
                                                 keys) == Sign::kPos;
             } else {
-                j += g.conflicts_solid(v, y, nullptr) ? 1 : 0;
+                j += g.conflicts_solid(v, y) ? 1 : 0;
             }
         }
         if (is_ghost(v)) {

@@ -83,12 +83,12 @@ TEST(Flips, TwoThreeAndBack) {
     ArrayStorage s = complex_from_tets(before);
     expect_valid(s, g);
     RetriangulationCounters counters;
-    const auto created = flip23(s, g, find_facet(s, {0, 1, 2}), &counters);
+    const auto created = flip23(s, g, find_facet(s, {0, 1, 2}), counters);
     ASSERT_EQ(created.size(), 3u);
     expect_valid(s, g);
     EXPECT_EQ(canonical(solid_tets(s)), canonical({{0, 1, 3, 4}, {1, 2, 3, 4}, {0, 2, 3, 4}}));
     const auto [t, i, j] = find_edge(s, 3, 4);
-    ASSERT_EQ(flip32(s, g, t, i, j, &counters).size(), 2u);
+    ASSERT_EQ(flip32(s, g, t, i, j, counters).size(), 2u);
     expect_valid(s, g);
     EXPECT_EQ(canonical(solid_tets(s)), canonical(before));
     EXPECT_EQ(counters.flip_count(FlipKind::k23), 1u);
@@ -101,7 +101,9 @@ TEST(Flips, ThreeTwoRefusedUnlessDegreeThree) {
     const Geometry g = geometry_by_index(ps);
     ArrayStorage s = complex_from_tets(oriented(ps, {{0, 1, 2, 3}, {0, 1, 2, 4}}));
     const auto [t, i, j] = find_edge(s, 0, 1);  // a hull edge with two solid and two ghost tets
-    EXPECT_TRUE(flip32(s, g, t, i, j, nullptr).empty());
+    RetriangulationCounters counters;
+    EXPECT_TRUE(flip32(s, g, t, i, j, counters).empty());
+    EXPECT_EQ(counters.flips_refused, 1u);
     expect_valid(s, g);
 }
 
@@ -115,10 +117,10 @@ TEST(Flips, OneFourAndBack) {
     (void)i;
     (void)j;
     ASSERT_FALSE(is_ghost(s.vertices(t)));
-    ASSERT_EQ(flip14(s, g, t, 4, &counters).size(), 4u);
+    ASSERT_EQ(flip14(s, g, t, 4, counters).size(), 4u);
     expect_valid(s, g);
     EXPECT_EQ(solid_tets(s).size(), 4u);
-    ASSERT_EQ(flip41(s, g, 4, &counters).size(), 1u);
+    ASSERT_EQ(flip41(s, g, 4, counters).size(), 1u);
     expect_valid(s, g);
     EXPECT_EQ(canonical(solid_tets(s)), canonical(before));
     EXPECT_EQ(counters.flip_count(FlipKind::k14), 1u);
@@ -132,7 +134,9 @@ TEST(Flips, OneFourRefusedOutsideTheTetrahedron) {
     const auto [t, i, j] = find_edge(s, 0, 3);
     (void)i;
     (void)j;
-    EXPECT_TRUE(flip14(s, g, t, 4, nullptr).empty());
+    RetriangulationCounters counters;
+    EXPECT_TRUE(flip14(s, g, t, 4, counters).empty());
+    EXPECT_EQ(counters.flips_refused, 1u);
     expect_valid(s, g);
 }
 
@@ -153,10 +157,13 @@ TEST(Flips, OneFourIntoAGhostGrowsTheHullAndFourOneShrinksIt) {
     }
     (void)ghost;
     ASSERT_NE(over, kNoTet);
-    ASSERT_EQ(flip14(s, g, over, 4, nullptr).size(), 4u);
+    RetriangulationCounters counters;
+    ASSERT_EQ(flip14(s, g, over, 4, counters).size(), 4u);
     expect_valid(s, g);
     EXPECT_EQ(solid_tets(s).size(), 2u);
-    ASSERT_EQ(flip41(s, g, 4, nullptr).size(), 1u);
+    ASSERT_EQ(flip41(s, g, 4, counters).size(), 1u);
+    EXPECT_EQ(counters.flip_count(FlipKind::k14), 1u);
+    EXPECT_EQ(counters.flip_count(FlipKind::k41), 1u);
     expect_valid(s, g);
     EXPECT_EQ(canonical(solid_tets(s)), canonical(before));
 }
@@ -172,7 +179,9 @@ TEST(Flips, OneFourIntoAGhostRefusedWhenThePointSeesMoreOfTheHull) {
             over = t;
         }
     }
-    EXPECT_TRUE(flip14(s, g, over, 4, nullptr).empty());
+    RetriangulationCounters counters;
+    EXPECT_TRUE(flip14(s, g, over, 4, counters).empty());
+    EXPECT_EQ(counters.flips_refused, 1u);
     expect_valid(s, g);
 }
 
@@ -185,20 +194,20 @@ TEST(Flips, TwoTwoOnAFlatHullQuadrilateralAndBack) {
     RetriangulationCounters counters;
     {
         const auto [t, i, j] = find_edge(s, 0, 2);
-        ASSERT_EQ(flip22(s, g, t, i, j, &counters).size(), 4u);
+        ASSERT_EQ(flip22(s, g, t, i, j, counters).size(), 4u);
     }
     expect_valid(s, g);
     EXPECT_EQ(canonical(solid_tets(s)), canonical({{0, 1, 3, 4}, {1, 2, 3, 4}}));
     {
         const auto [t, i, j] = find_edge(s, 1, 3);
-        ASSERT_EQ(flip22(s, g, t, i, j, &counters).size(), 4u);
+        ASSERT_EQ(flip22(s, g, t, i, j, counters).size(), 4u);
     }
     expect_valid(s, g);
     EXPECT_EQ(canonical(solid_tets(s)), canonical(before));
     EXPECT_EQ(counters.flip_count(FlipKind::k22), 2u);
     // Edge 0 4 is not a diagonal of a flat quadrilateral.
     const auto [t, i, j] = find_edge(s, 0, 4);
-    EXPECT_TRUE(flip22(s, g, t, i, j, &counters).empty());
+    EXPECT_TRUE(flip22(s, g, t, i, j, counters).empty());
 }
 
 TEST(Flips, FourFourInAnOctahedronAndBack) {
@@ -214,7 +223,7 @@ TEST(Flips, FourFourInAnOctahedronAndBack) {
         const EdgeRing ring = edge_ring(s, t, i, j);
         ASSERT_EQ(ring.ring.size(), 4u);
         const int diagonal = (ring.ring[0] == 2 || ring.ring[0] == 4) ? 0 : 1;
-        ASSERT_EQ(flip44(s, g, t, i, j, diagonal, &counters).size(), 4u);
+        ASSERT_EQ(flip44(s, g, t, i, j, diagonal, counters).size(), 4u);
     }
     expect_valid(s, g);
     EXPECT_TRUE(find_facet(s, {2, 4, 0}) != kNoHalfFacet);
@@ -222,7 +231,7 @@ TEST(Flips, FourFourInAnOctahedronAndBack) {
         const auto [t, i, j] = find_edge(s, 2, 4);
         const EdgeRing ring = edge_ring(s, t, i, j);
         const int diagonal = (ring.ring[0] == 0 || ring.ring[0] == 1) ? 0 : 1;
-        ASSERT_EQ(flip44(s, g, t, i, j, diagonal, &counters).size(), 4u);
+        ASSERT_EQ(flip44(s, g, t, i, j, diagonal, counters).size(), 4u);
     }
     expect_valid(s, g);
     EXPECT_EQ(canonical(solid_tets(s)), canonical(before));
@@ -254,7 +263,7 @@ TEST(Flips, RandomTwoThreeFlipsAreUndoneByThreeTwo) {
         const VertexId d = s.vertices(t)[static_cast<std::size_t>(f)];
         const VertexId e = s.vertices(tet_of(across))[static_cast<std::size_t>(facet_of(across))];
         const auto triangle = facet_vertices(s.vertices(t), f);
-        if (flip23(s, g, half_facet(t, f), &counters).empty()) {
+        if (flip23(s, g, half_facet(t, f), counters).empty()) {
             // A reflex pair (the edge d e misses the triangle): nothing may have changed.
             ++refused;
             EXPECT_EQ(canonical(solid_tets(s)), before);
@@ -263,12 +272,12 @@ TEST(Flips, RandomTwoThreeFlipsAreUndoneByThreeTwo) {
         ++performed;
         expect_valid(s, g);
         const auto [u, i, j] = find_edge(s, d, e);
-        ASSERT_EQ(flip32(s, g, u, i, j, &counters).size(), 2u);
+        ASSERT_EQ(flip32(s, g, u, i, j, counters).size(), 2u);
         EXPECT_EQ(canonical(solid_tets(s)), before);
         // Keep every third flip, so later flips act on a non-Delaunay complex.
         if (trial % 3 == 0) {
             ++kept;
-            ASSERT_FALSE(flip23(s, g, find_facet(s, triangle), &counters).empty());
+            ASSERT_FALSE(flip23(s, g, find_facet(s, triangle), counters).empty());
         }
     }
     expect_valid(s, g);

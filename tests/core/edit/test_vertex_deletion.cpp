@@ -59,7 +59,7 @@ void delete_and_compare(const PointSet& ps,
         const VertexId v = pool[random.below(pool.size())];
         SCOPED_TRACE("deletion " + std::to_string(k) + ": point " + std::to_string(v));
         std::vector<TetId> fresh;
-        ASSERT_NO_THROW(fresh = delete_vertex(storage, geometry, v, submerged, &counters))
+        ASSERT_NO_THROW(fresh = delete_vertex(storage, geometry, v, submerged, counters))
             << (hull ? "hull vertex" : "interior vertex");
         hull_deletions += hull ? 1 : 0;
         gone[v] = true;

@@ -169,15 +169,14 @@ TEST(DelaunayTriangulation, LocateFindsAClosedCell) {
         const Geometry& g = dt.geometry();
         if (is_ghost(v)) {
             // p strictly in front of the hull triangle.
-            EXPECT_EQ(Geometry::orient3d(g.point(v[0]), g.point(v[2]), g.point(v[1]), p, nullptr),
+            EXPECT_EQ(Geometry::orient3d(g.point(v[0]), g.point(v[2]), g.point(v[1]), p),
                       Sign::kNeg);
             continue;
         }
         for (int f = 0; f < 4; ++f) {
             const auto tri = facet_vertices(v, f);
-            EXPECT_NE(
-                Geometry::orient3d(g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), p, nullptr),
-                Sign::kNeg);
+            EXPECT_NE(Geometry::orient3d(g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), p),
+                      Sign::kNeg);
         }
     }
 }
@@ -186,9 +185,8 @@ TEST(DelaunayTriangulation, RemovalEqualsRebuildAndInsertionContinues) {
     const PointSet ps = generate_points("grid", 216, 1);
     DelaunayTriangulation dt = live_in_input_order(head(ps, 200));
     const std::vector<std::uint32_t> ids{0, 7, 199, 100, 43, 36, 180};
-    RetriangulationCounters counters;
-    dt.remove(ids, &counters);
-    EXPECT_EQ(counters.vertices_deleted, ids.size());
+    dt.remove(ids);
+    EXPECT_EQ(dt.edit_counters().vertices_deleted, ids.size());
     std::vector<bool> gone(ps.size(), false);
     for (auto id : ids) {
         gone[id] = true;

@@ -21,7 +21,8 @@ struct CreationAudit {
 /// Triangulates `points` in `sequence` order with the life-cycle observer (walking, array
 /// storage) and audits every created solid tetrahedron against all points: O(created · n)
 /// squared distances to a certified circumcentre, the exact perturbed insphere test for the points
-/// the certificate leaves undecided (near the sphere), for small n. Generic input (no repeats) is assumed by the rule.
+/// the certificate leaves undecided (near the sphere), for small n. Generic input (no repeats) is
+/// assumed by the rule.
 CreationAudit audit_creation(const core::PointSet& points, std::span<const std::uint32_t> sequence);
 
 }  // namespace cavity::experiments

@@ -44,7 +44,7 @@ public:
     /// Builds the triangulation of four affinely independent vertices: one solid tetrahedron and
     /// the four ghosts on its faces.
     void bootstrap(VertexId a, VertexId b, VertexId c, VertexId d) {
-        if (geometry_.orient3d(a, b, c, d, counters()) == Sign::kNeg) {
+        if (geometry_.orient3d(a, b, c, d, tally()) == Sign::kNeg) {
             std::swap(a, b);
         }
         bootstrap_ = {a, b, c, d};
@@ -81,8 +81,8 @@ public:
     /// ghost, in the outer halfspace of its hull triangle).
     bool conflicts(TetId t, VertexId u) {
         const TetVertices& v = storage_.vertices(t);
-        return is_ghost(v) ? geometry_.conflicts_ghost(v, u, bootstrap_, counters())
-                           : geometry_.conflicts_solid(v, u, counters());
+        return is_ghost(v) ? geometry_.conflicts_ghost(v, u, bootstrap_, tally())
+                           : geometry_.conflicts_solid(v, u, tally());
     }
 
     /// InsertVertex3D(u, t0): t0 must conflict with u. Deletes every tetrahedron in conflict with
@@ -117,7 +117,7 @@ public:
         }
         storage_.end_operation();
         if constexpr (Observer::kCounting) {
-            Counters& c = *counters();
+            Counters& c = tally();
             ++c.insertions;
             c.max_cavity = std::max<std::uint64_t>(c.max_cavity, deleted_.size());
         }
@@ -147,13 +147,8 @@ public:
 
     Observer& observer() { return observer_; }
 
-    Counters* counters() {
-        if constexpr (Observer::kCounting) {
-            return observer_.counters();
-        } else {
-            return nullptr;
-        }
-    }
+    /// The observer's tally (counters.h): Counters when it counts, else Uncounted.
+    auto& tally() { return observer_.tally(); }
 
 private:
     static constexpr std::uint32_t kNoStamp = 0xFFFF'FFFFu;
@@ -171,7 +166,7 @@ private:
 
         bool conflicts(TetId t) {
             if constexpr (Observer::kCounting) {
-                ++engine.counters()->dig_tests;
+                ++engine.tally().dig_tests;
             }
             return engine.conflicts(t, u);
         }
@@ -189,7 +184,7 @@ private:
         const TetId t = storage_.add_tetrahedron(v);
         observer_.on_tet_created(t, v, step);
         if constexpr (Observer::kCounting) {
-            ++(is_ghost(v) ? counters()->ghosts_created : counters()->tets_created);
+            ++(is_ghost(v) ? tally().ghosts_created : tally().tets_created);
         }
         return t;
     }
@@ -197,7 +192,7 @@ private:
     void remove(TetId t) {
         const TetVertices& v = storage_.vertices(t);
         if constexpr (Observer::kCounting) {
-            ++(is_ghost(v) ? counters()->ghosts_deleted : counters()->tets_deleted);
+            ++(is_ghost(v) ? tally().ghosts_deleted : tally().tets_deleted);
         }
         if (geometry_.weighted()) {
             stamp(deleted_stamp_, v);

@@ -36,7 +36,8 @@ public:
         next_.assign(n, kNoVertex);
         head_.assign(engine.storage().capacity(), kNoVertex);
         for (VertexId p = 4; p < n; ++p) {
-            attach(p, walk_cells(engine, p, engine.last_solid(), nullptr));
+            Uncounted initial;  // the initial attachment is not a redistribution
+            attach(p, walk_cells(engine, p, engine.last_solid(), initial));
         }
     }
 
@@ -77,9 +78,9 @@ public:
                 const VertexId following = next_[p];
                 if (cell_of_[p] == old_cell) {  // skips inserted and redundant points
                     if constexpr (Observer::kCounting) {
-                        ++engine.counters()->points_redistributed;
+                        ++engine.tally().points_redistributed;
                     }
-                    attach(p, walk_cells(engine, p, start, engine.counters()));
+                    attach(p, walk_cells(engine, p, start, engine.tally()));
                 }
                 p = following;
             }
@@ -124,8 +125,7 @@ private:
             bool inside = true;
             for (int f = 0; f < 4 && inside; ++f) {
                 const auto tri = facet_vertices(b, f);
-                inside = Geometry::orient3d(
-                             g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), o, nullptr) ==
+                inside = Geometry::orient3d(g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), o) ==
                          Sign::kPos;
             }
             if (inside) {
@@ -139,11 +139,8 @@ private:
     }
 
     /// The remembering stochastic walk over cells (solid tetrahedra and ghost regions).
-    template <class Storage, class Observer>
-    TetId walk_cells(BowyerWatson<Storage, Observer>& engine,
-                     VertexId p,
-                     TetId t,
-                     Counters* counters) {
+    template <class Storage, class Observer, Tally T>
+    TetId walk_cells(BowyerWatson<Storage, Observer>& engine, VertexId p, TetId t, T& tally) {
         const Geometry& g = engine.geometry();
         const Point3& q = g.point(p);
         return stochastic_walk(
@@ -151,8 +148,8 @@ private:
             t,
             random_,
             [&](TetId, const TetVertices&) {
-                if (counters != nullptr) {
-                    ++counters->redistribution_steps;
+                if constexpr (T::kCounting) {
+                    ++tally.redistribution_steps;
                 }
                 return false;
             },
@@ -163,7 +160,7 @@ private:
                 const auto tri = facet_vertices(v, f);
                 if (!is_ghost(v) || f == 3) {
                     return Geometry::orient3d(
-                               g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), q, counters) ==
+                               g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), q, tally) ==
                            Sign::kNeg;
                 }
                 // A ghost facet through g: the plane through O and the hull edge. The region lies
@@ -172,7 +169,7 @@ private:
                 const auto at = [&](VertexId w) -> const Point3& {
                     return w == kGhostVertex ? interior_ : g.point(w);
                 };
-                return Geometry::orient3d(at(tri[0]), at(tri[1]), at(tri[2]), q, counters) ==
+                return Geometry::orient3d(at(tri[0]), at(tri[1]), at(tri[2]), q, tally) ==
                        Sign::kPos;
             });
     }

@@ -81,7 +81,7 @@ RunEnd run(const Geometry& geometry,
     for (VertexId u = 4; u < last; ++u) {
         std::uint64_t steps_before = 0;
         if constexpr (Observer::kCounting) {
-            steps_before = observer.counters()->walk_steps;
+            steps_before = observer.tally().walk_steps;
         }
         const TetId located = locator.locate(engine, u);
         const ConflictSeed seed = seek_conflict(engine, u, located, scratch);
@@ -106,7 +106,7 @@ RunEnd run(const Geometry& geometry,
                 u,
                 inserted ? static_cast<std::uint32_t>(engine.created().size()) : 0u,
                 inserted ? static_cast<std::uint32_t>(engine.deleted().size()) : 0u,
-                static_cast<std::uint32_t>(observer.counters()->walk_steps - steps_before)});
+                static_cast<std::uint32_t>(observer.tally().walk_steps - steps_before)});
         }
         // Expensive builds check the whole complex after the 4th, 8th, 16th, ... insertion and
         // the last, so the check costs O(n log n) of complex size, not O(n^2).
@@ -126,7 +126,7 @@ RunEnd run(const Geometry& geometry,
     std::sort(out.redundant.begin(), out.redundant.end());
     observer.on_finish();
     if constexpr (Observer::kCounting) {
-        out.counters = *observer.counters();
+        out.counters = observer.tally();
         out.counters.duplicates = out.duplicates.size();
         out.counters.redundant = out.redundant.size();
         if constexpr (requires { storage.probes(); }) {

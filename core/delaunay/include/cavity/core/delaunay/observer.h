@@ -2,6 +2,7 @@
 
 #include <concepts>
 #include <cstdint>
+#include <type_traits>
 
 #include "cavity/core/geometry/counters.h"
 #include "cavity/core/geometry/geometry.h"
@@ -20,7 +21,10 @@ struct NullObserver {
     /// True for ConflictCountingObserver, which fills the conflict fields of Counters.
     static constexpr bool kCountsConflicts = false;
 
-    Counters* counters() { return nullptr; }
+    /// Where the engine, its walks and its tests count: nowhere.
+    Uncounted& tally() { return uncounted; }
+
+    [[no_unique_address]] Uncounted uncounted;
 
     /// Called once before the first insertion, with the engine's points: vertex ids in the other
     /// hooks are insertion ranks, and geometry.key(v) is the input index of vertex v.
@@ -47,7 +51,8 @@ concept EngineObserver = requires(O observer,
                                   const InsertionRecord& record) {
     { O::kCounting } -> std::convertible_to<bool>;
     { O::kCountsConflicts } -> std::convertible_to<bool>;
-    { observer.counters() } -> std::same_as<Counters*>;
+    requires Tally<std::remove_reference_t<decltype(observer.tally())>>;
+    requires std::remove_reference_t<decltype(observer.tally())>::kCounting == O::kCounting;
     observer.on_start(geometry);
     observer.on_tet_created(t, vertices, step);
     observer.on_tet_deleted(t, step);
@@ -59,7 +64,7 @@ concept EngineObserver = requires(O observer,
 struct CountingObserver : NullObserver {
     static constexpr bool kCounting = true;
 
-    Counters* counters() { return &totals; }
+    Counters& tally() { return totals; }
 
     Counters totals;
 };

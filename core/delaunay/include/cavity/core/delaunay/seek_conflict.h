@@ -55,7 +55,7 @@ ConflictSeed seek_conflict(BowyerWatson<Storage, Observer>& engine,
                 continue;  // only the hull triangle of a ghost is a real face
             }
             const auto tri = facet_vertices(v, f);
-            if (engine.geometry().orient3d(tri[0], tri[1], tri[2], u, engine.counters()) !=
+            if (engine.geometry().orient3d(tri[0], tri[1], tri[2], u, engine.tally()) !=
                 Sign::kZero) {
                 continue;
             }

@@ -27,13 +27,13 @@ public:
     TetId locate(BowyerWatson<Storage, Observer>& engine, const Point3& p, TetId start) {
         Storage& storage = engine.storage();
         const Geometry& g = engine.geometry();
-        Counters* counters = engine.counters();
+        auto& tally = engine.tally();
         const auto orient =
             [&](const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
                 if constexpr (Observer::kCounting) {
-                    ++counters->walk_orient_calls;
+                    ++tally.walk_orient_calls;
                 }
-                return Geometry::orient3d(a, b, c, d, counters);
+                return Geometry::orient3d(a, b, c, d, tally);
             };
         const TetVertices& first = storage.vertices(start);
         if (is_ghost(first)) {
@@ -56,7 +56,7 @@ public:
         int entered = -1;
         for (;;) {
             if constexpr (Observer::kCounting) {
-                ++counters->walk_steps;
+                ++tally.walk_steps;
             }
             const TetVertices& v = storage.vertices(t);
             if (is_ghost(v)) {
@@ -97,7 +97,7 @@ private:
     template <class Storage, class Observer>
     TetId fall_back(BowyerWatson<Storage, Observer>& engine, const Point3& p, TetId t) {
         if constexpr (Observer::kCounting) {
-            ++engine.counters()->walk_fallbacks;
+            ++engine.tally().walk_fallbacks;
         }
         return fallback_.locate(engine, p, t);
     }

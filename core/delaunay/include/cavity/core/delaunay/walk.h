@@ -23,14 +23,14 @@ public:
     template <class Storage, class Observer>
     TetId locate(BowyerWatson<Storage, Observer>& engine, const Point3& p, TetId start) {
         const Geometry& geometry = engine.geometry();
-        Counters* counters = engine.counters();
+        auto& tally = engine.tally();
         return stochastic_walk(
             engine.storage(),
             start,
             random_,
             [&](TetId, const TetVertices& v) {
                 if constexpr (Observer::kCounting) {
-                    ++counters->walk_steps;
+                    ++tally.walk_steps;
                 }
                 return is_ghost(v);  // entered through the hull triangle with p strictly in front
             },
@@ -39,14 +39,14 @@ public:
                     return false;
                 }
                 if constexpr (Observer::kCounting) {
-                    ++counters->walk_orient_calls;
+                    ++tally.walk_orient_calls;
                 }
                 const auto tri = facet_vertices(v, f);
                 return Geometry::orient3d(geometry.point(tri[0]),
                                           geometry.point(tri[1]),
                                           geometry.point(tri[2]),
                                           p,
-                                          counters) == Sign::kNeg;
+                                          tally) == Sign::kNeg;
             });
     }
 

@@ -16,7 +16,7 @@
 /// flip (and every apex just outside it) behind or on its plane, so the hull stays locally convex.
 /// A flip that fails the check returns an empty vector and leaves the storage unchanged. On success
 /// the new tetrahedra are glued to each other and to the outside, and their ids are returned.
-/// Vertex ids index `geometry`. `counters` may be null.
+/// Vertex ids index `geometry`; `counters` receives the flip (or its refusal).
 namespace cavity::core {
 
 /// 2-3: the two tetrahedra sharing the triangle of half-facet h become three around the edge
@@ -24,7 +24,7 @@ namespace cavity::core {
 std::vector<TetId> flip23(ArrayStorage& storage,
                           const Geometry& geometry,
                           HalfFacet h,
-                          RetriangulationCounters* counters);
+                          RetriangulationCounters& counters);
 
 /// 3-2: the three tetrahedra around edge (t[i], t[j]) become two sharing the triangle of its ring.
 /// Refused unless the edge has degree 3.
@@ -33,7 +33,7 @@ std::vector<TetId> flip32(ArrayStorage& storage,
                           TetId t,
                           int i,
                           int j,
-                          RetriangulationCounters* counters);
+                          RetriangulationCounters& counters);
 
 /// 1-4: inserts the new vertex p (not yet in the triangulation) into tetrahedron t, which must
 /// contain it in its interior; for a ghost t, p must lie strictly in front of its hull triangle.
@@ -41,13 +41,13 @@ std::vector<TetId> flip14(ArrayStorage& storage,
                           const Geometry& geometry,
                           TetId t,
                           VertexId p,
-                          RetriangulationCounters* counters);
+                          RetriangulationCounters& counters);
 
 /// 4-1: removes vertex p of degree 4 (exactly four tetrahedra around it, ghosts included).
 std::vector<TetId> flip41(ArrayStorage& storage,
                           const Geometry& geometry,
                           VertexId p,
-                          RetriangulationCounters* counters);
+                          RetriangulationCounters& counters);
 
 /// 4-4: the four tetrahedra around edge (t[i], t[j]), whose ring is r0 r1 r2 r3, become four around
 /// the diagonal r0 r2 (diagonal 0) or r1 r3 (diagonal 1). Refused unless the edge has degree 4 and
@@ -58,7 +58,7 @@ std::vector<TetId> flip44(ArrayStorage& storage,
                           int i,
                           int j,
                           int diagonal,
-                          RetriangulationCounters* counters);
+                          RetriangulationCounters& counters);
 
 /// 2-2: edge (t[i], t[j]) is a diagonal of a flat quadrilateral on the hull, shared by two solid
 /// tetrahedra; they become the two over the other diagonal (with the two ghosts behind: a 4-4 flip
@@ -68,6 +68,6 @@ std::vector<TetId> flip22(ArrayStorage& storage,
                           TetId t,
                           int i,
                           int j,
-                          RetriangulationCounters* counters);
+                          RetriangulationCounters& counters);
 
 }  // namespace cavity::core

@@ -51,6 +51,6 @@ std::vector<TetVertices> gift_wrap_cavity(const Geometry& geometry,
                                           std::span<const TetVertices> boundary,
                                           std::span<const VertexId> candidates,
                                           bool ghost_allowed,
-                                          RetriangulationCounters* counters);
+                                          RetriangulationCounters& counters);
 
 }  // namespace cavity::core

@@ -25,6 +25,6 @@ std::vector<TetId> delete_vertex(ArrayStorage& storage,
                                  const Geometry& geometry,
                                  VertexId v,
                                  std::span<const VertexId> submerged,
-                                 RetriangulationCounters* counters);
+                                 RetriangulationCounters& counters);
 
 }  // namespace cavity::core

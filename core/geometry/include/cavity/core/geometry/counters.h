@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <concepts>
 #include <cstdint>
 #include <string_view>
 
@@ -17,41 +18,55 @@ inline constexpr int kPredicateKindCount = 4;
 inline constexpr std::array<std::string_view, kPredicateKindCount> kPredicateKindNames{
     "orient3d", "insphere", "orient4d", "ghost"};
 
+/// Which writers show a counter: conflicts only mean something in a run that counted them.
+enum class CounterGroup { kEngine, kConflicts };
+
+/// Every scalar counter, one line each: its name (the field of Counters and the key of every
+/// output: the CLI's --stats JSON, Python's stats), its group, and what it counts. Adding a
+/// counter is adding its line here; the field and its row in kCounterFields follow.
+// A macro because C++20 cannot enumerate a struct's fields: the struct and the table are both
+// generated from this one list.
+#define CAVITY_COUNTERS(X)                                                                         \
+    X(insertions, kEngine)             /* points inserted (not the bootstrap four) */              \
+    X(tets_created, kEngine)           /* solid tetrahedra created (Theorem 5.4) */                \
+    X(tets_deleted, kEngine)           /* solid tetrahedra deleted */                              \
+    X(ghosts_created, kEngine)         /* ghost tetrahedra created */                              \
+    X(ghosts_deleted, kEngine)         /* ghost tetrahedra deleted */                              \
+    X(max_cavity, kEngine)             /* most tetrahedra deleted by one insertion */              \
+    X(dig_tests, kEngine)              /* conflict tests in DigCavity3D */                         \
+    X(walk_steps, kEngine)             /* tetrahedra visited by walking point location */          \
+    X(walk_orient_calls, kEngine)      /* orient3d calls made by the walk */                       \
+    X(walk_fallbacks, kEngine)         /* straight-line walks finished by the visibility walk */   \
+    X(points_redistributed, kEngine)   /* conflict graph: uninserted points moved to a new cell */ \
+    X(redistribution_steps, kEngine)   /* conflict graph: cells visited while moving them */       \
+    X(duplicates, kEngine)             /* input points repeating an earlier one, not inserted */   \
+    X(redundant, kEngine)              /* weighted points that are not vertices (submerged) */     \
+    X(perturbations, kEngine)          /* perturbed predicates that needed the tie-break */        \
+    X(perturbation_cofactors, kEngine) /* cofactors the tie-breaks evaluated */                    \
+    X(hash_probes, kEngine)            /* face hash table probes (hash storage only) */            \
+    X(conflicts_created, kConflicts)   /* Σj over created solid tetrahedra (Theorem 5.4) */       \
+    X(ghost_conflicts_created, kConflicts) /* the same over created ghosts */                      \
+    X(conflicts_deleted, kConflicts)       /* Σj over deleted solid tetrahedra */                 \
+    X(ghost_conflicts_deleted, kConflicts) /* the same over deleted ghosts */                      \
+    X(live_conflicts_max, kConflicts)      /* most live conflicts, solid and ghost, at once */     \
+    X(conflict_tests, kConflicts) /* exact tests the counting made (its cost, not the engine's) */
+
 /// Work done by one run, summed over insertions. Everything the chapter's analysis counts:
 /// tetrahedra created and deleted (Theorem 5.4), conflicts (Proposition 5.1-5.3 via Σ j), walk
-/// steps (§5.5), predicate calls by deciding stage and perturbation invocations.
+/// steps (§5.5), predicate calls by deciding stage and perturbation invocations. The conflicts
+/// are counted only by ConflictCountingObserver (conflict_counter.h): j of a solid tetrahedron
+/// is the number of input points in its open (perturbed) circumball, a ghost's the points in
+/// front of its hull triangle; deleted tetrahedra's conflicts are all still uninserted when they
+/// die; live conflicts are what a conflict graph keeping every conflict stores.
+///
+/// Counters is also the tally the geometric tests record their deciding stage in (see Tally).
 struct Counters {
-    std::uint64_t insertions = 0;
-    std::uint64_t tets_created = 0;
-    std::uint64_t tets_deleted = 0;
-    std::uint64_t ghosts_created = 0;
-    std::uint64_t ghosts_deleted = 0;
-    std::uint64_t max_cavity = 0;         ///< most tetrahedra deleted by one insertion
-    std::uint64_t dig_tests = 0;          ///< conflict tests in DigCavity3D
-    std::uint64_t walk_steps = 0;         ///< tetrahedra visited by walking point location
-    std::uint64_t walk_orient_calls = 0;  ///< orient3d calls made by the walk
-    std::uint64_t walk_fallbacks = 0;     ///< straight-line walks finished by the visibility walk
-    std::uint64_t points_redistributed =
-        0;  ///< conflict graph: uninserted points moved to a new cell
-    std::uint64_t redistribution_steps = 0;  ///< conflict graph: cells visited while moving them
-    std::uint64_t duplicates = 0;     ///< input points repeating an earlier one, not inserted
-    std::uint64_t redundant = 0;      ///< weighted points that are not vertices (submerged)
-    std::uint64_t perturbations = 0;  ///< perturbed predicates that needed the tie-break
-    std::uint64_t perturbation_cofactors = 0;
-    std::uint64_t hash_probes = 0;
-    /// Conflicts (Theorem 5.4), counted only by ConflictCountingObserver (conflict_counter.h).
-    /// conflicts_created is Σj over created solid tetrahedra, j = the input points in the open
-    /// (perturbed) circumball; ghosts' conflicts, the points in front of their hull triangle, are
-    /// counted apart. Deleted: the same sums over deleted tetrahedra, whose conflicts are all still
-    /// uninserted when they die. Live: what a conflict graph keeping every conflict stores.
-    std::uint64_t conflicts_created = 0;
-    std::uint64_t ghost_conflicts_created = 0;
-    std::uint64_t conflicts_deleted = 0;
-    std::uint64_t ghost_conflicts_deleted = 0;
-    std::uint64_t live_conflicts_max =
-        0;  ///< most live conflicts (solid and ghost) after an insertion
-    std::uint64_t conflict_tests =
-        0;  ///< exact tests the counting made (its cost, not the engine's)
+    static constexpr bool kCounting = true;
+
+#define CAVITY_COUNTER_FIELD(name, group) std::uint64_t name = 0;
+    CAVITY_COUNTERS(CAVITY_COUNTER_FIELD)
+#undef CAVITY_COUNTER_FIELD
+
     /// [predicate kind][stage]: calls decided at that stage.
     std::array<std::array<std::uint64_t, predicates::kStageCount>, kPredicateKindCount>
         stage_calls{};
@@ -61,8 +76,17 @@ struct Counters {
     }
 };
 
-/// Which writers show a counter: conflicts only mean something in a run that counted them.
-enum class CounterGroup { kEngine, kConflicts };
+/// The tally of code that does not count: the engine without a counting observer, flips,
+/// gift-wrapping, the CDT and the validators. Tests given it compile to the plain predicates.
+struct Uncounted {
+    static constexpr bool kCounting = false;
+};
+
+/// Where a geometric test records the stage that decided it, chosen at compile time: Counters in
+/// the counting engine, Uncounted everywhere else. The one counting mechanism of the engine, its
+/// walks and its tests: no pointer is checked at run time.
+template <class T>
+concept Tally = std::same_as<T, Counters> || std::same_as<T, Uncounted>;
 
 /// One scalar counter of Counters, by the name every output uses.
 struct CounterField {
@@ -71,39 +95,19 @@ struct CounterField {
     CounterGroup group;
 };
 
-/// Every scalar counter, in the order outputs list them: the CLI's --stats JSON and Python's
-/// stats are written from this table (the per-stage counts follow it), so a new counter is its
-/// field above and its row here.
-inline constexpr std::array<CounterField, 23> kCounterFields{{
-    {"insertions", &Counters::insertions, CounterGroup::kEngine},
-    {"tets_created", &Counters::tets_created, CounterGroup::kEngine},
-    {"tets_deleted", &Counters::tets_deleted, CounterGroup::kEngine},
-    {"ghosts_created", &Counters::ghosts_created, CounterGroup::kEngine},
-    {"ghosts_deleted", &Counters::ghosts_deleted, CounterGroup::kEngine},
-    {"max_cavity", &Counters::max_cavity, CounterGroup::kEngine},
-    {"dig_tests", &Counters::dig_tests, CounterGroup::kEngine},
-    {"walk_steps", &Counters::walk_steps, CounterGroup::kEngine},
-    {"walk_orient_calls", &Counters::walk_orient_calls, CounterGroup::kEngine},
-    {"walk_fallbacks", &Counters::walk_fallbacks, CounterGroup::kEngine},
-    {"points_redistributed", &Counters::points_redistributed, CounterGroup::kEngine},
-    {"redistribution_steps", &Counters::redistribution_steps, CounterGroup::kEngine},
-    {"duplicates", &Counters::duplicates, CounterGroup::kEngine},
-    {"redundant", &Counters::redundant, CounterGroup::kEngine},
-    {"perturbations", &Counters::perturbations, CounterGroup::kEngine},
-    {"perturbation_cofactors", &Counters::perturbation_cofactors, CounterGroup::kEngine},
-    {"hash_probes", &Counters::hash_probes, CounterGroup::kEngine},
-    {"conflicts_created", &Counters::conflicts_created, CounterGroup::kConflicts},
-    {"ghost_conflicts_created", &Counters::ghost_conflicts_created, CounterGroup::kConflicts},
-    {"conflicts_deleted", &Counters::conflicts_deleted, CounterGroup::kConflicts},
-    {"ghost_conflicts_deleted", &Counters::ghost_conflicts_deleted, CounterGroup::kConflicts},
-    {"live_conflicts_max", &Counters::live_conflicts_max, CounterGroup::kConflicts},
-    {"conflict_tests", &Counters::conflict_tests, CounterGroup::kConflicts},
-}};
+/// Every scalar counter, in CAVITY_COUNTERS's order: the CLI's --stats JSON and Python's stats
+/// are written from this table (the per-stage counts follow it).
+inline constexpr std::array kCounterFields{
+#define CAVITY_COUNTER_ROW(name, group) CounterField{#name, &Counters::name, CounterGroup::group},
+    CAVITY_COUNTERS(CAVITY_COUNTER_ROW)
+#undef CAVITY_COUNTER_ROW
+};
 
-// A field added to Counters without its row would be missing from every output.
+// The table and the struct come from the same list; a field declared outside it would be
+// missing from every output.
 static_assert(sizeof(Counters) ==
                   kCounterFields.size() * sizeof(std::uint64_t) + sizeof(Counters::stage_calls),
-              "every scalar counter of Counters has a row in kCounterFields");
+              "every scalar counter of Counters comes from CAVITY_COUNTERS");
 
 /// What one insertion did, handed to observers after it completes.
 struct InsertionRecord {

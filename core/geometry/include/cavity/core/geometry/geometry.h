@@ -19,7 +19,7 @@ using predicates::WeightedPoint3;
 
 /// The points the engine triangulates, in insertion order (vertex id = insertion rank, for memory
 /// locality), each with its perturbation key (the input index), and the geometric tests of the
-/// engine on top of the exact and perturbed predicates. When `counters` is non-null every test
+/// engine on top of the exact and perturbed predicates. Given Counters as its tally, every test
 /// records its deciding stage.
 class Geometry {
 public:
@@ -59,34 +59,53 @@ public:
         return {p.x, p.y, p.z, weights_[v]};
     }
 
-    Sign orient3d(VertexId a, VertexId b, VertexId c, VertexId d, Counters* counters) const {
-        return orient3d(point(a), point(b), point(c), point(d), counters);
+    /// Every test below comes in two forms: without a tally (the plain predicates) and with one
+    /// (Tally, counters.h), which records the stage that decided it when the tally counts.
+    Sign orient3d(VertexId a, VertexId b, VertexId c, VertexId d) const {
+        return predicates::orient3d(point(a), point(b), point(c), point(d));
     }
 
+    template <Tally T>
+    Sign orient3d(VertexId a, VertexId b, VertexId c, VertexId d, T& tally) const {
+        return orient3d(point(a), point(b), point(c), point(d), tally);
+    }
+
+    static Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+        return predicates::orient3d(a, b, c, d);
+    }
+
+    template <Tally T>
     static Sign orient3d(
-        const Point3& a, const Point3& b, const Point3& c, const Point3& d, Counters* counters) {
-        if (counters == nullptr) {
+        const Point3& a, const Point3& b, const Point3& c, const Point3& d, T& tally) {
+        if constexpr (!T::kCounting) {
             return predicates::orient3d(a, b, c, d);
+        } else {
+            const auto verdict = predicates::orient3d_staged(a, b, c, d);
+            tally.count_predicate(PredicateKind::kOrient3d, verdict.stage);
+            return verdict.sign;
         }
-        const auto verdict = predicates::orient3d_staged(a, b, c, d);
-        counters->count_predicate(PredicateKind::kOrient3d, verdict.stage);
-        return verdict.sign;
     }
 
     /// True when u is in the perturbed open circumball (weighted: below the perturbed witness
     /// plane) of the solid tetrahedron t. The common case (unweighted, uncounted, not a tie) is
     /// inline; the perturbation keys are read only on an exact tie.
-    [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t,
-                                                VertexId u,
-                                                Counters* counters) const {
-        if (counters == nullptr && !weighted()) {
-            const Sign exact =
-                predicates::insphere(point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
-            // On an exact tie go straight to the tie-break: the exact determinant is already
-            // known to be zero, and evaluating it again costs about 12% of a 50^3 grid's run.
-            return exact != Sign::kZero ? exact == Sign::kPos : tie_breaks_into(t, u);
+    [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t, VertexId u) const {
+        Uncounted none;
+        return conflicts_solid(t, u, none);
+    }
+
+    template <Tally T>
+    [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t, VertexId u, T& tally) const {
+        if constexpr (!T::kCounting) {
+            if (!weighted()) {
+                const Sign exact = predicates::insphere(
+                    point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
+                // On an exact tie go straight to the tie-break: the exact determinant is already
+                // known to be zero, and evaluating it again costs about 12% of a 50^3 grid's run.
+                return exact != Sign::kZero ? exact == Sign::kPos : tie_breaks_into(t, u);
+            }
         }
-        return conflicts_solid_exactly(t, u, counters);
+        return conflicts_solid_exactly(t, u, tally);
     }
 
     /// True when u is in the perturbed outer halfspace of the hull triangle of ghost tetrahedron
@@ -94,24 +113,38 @@ public:
     /// (a bootstrap vertex); it is used only when u is coplanar with the hull triangle.
     bool conflicts_ghost(const TetVertices& t,
                          VertexId u,
+                         const std::array<VertexId, 4>& interior) const {
+        Uncounted none;
+        return conflicts_ghost(t, u, interior, none);
+    }
+
+    template <Tally T>
+    bool conflicts_ghost(const TetVertices& t,
+                         VertexId u,
                          const std::array<VertexId, 4>& interior,
-                         Counters* counters) const;
+                         T& tally) const;
 
     /// The coplanar case of conflicts_ghost: u on the plane of the hull triangle of ghost t,
     /// `behind` a vertex strictly behind that plane (it orients the plane). True when u is inside
     /// the triangle's perturbed circumdisk (weighted: the perturbed power test in the plane), as
     /// the engine's ghost test decides; gift-wrapping asks the same question.
+    bool conflicts_ghost_in_plane(const TetVertices& t, VertexId u, VertexId behind) const {
+        Uncounted none;
+        return conflicts_ghost_in_plane(t, u, behind, none);
+    }
+
+    template <Tally T>
     bool conflicts_ghost_in_plane(const TetVertices& t,
                                   VertexId u,
                                   VertexId behind,
-                                  Counters* counters) const;
+                                  T& tally) const;
 
 private:
     /// The perturbed in-sphere test of u against solid t when the exact one is zero (out of
     /// line: rare, and kept off the inlined fast path).
     bool tie_breaks_into(const TetVertices& t, VertexId u) const;
-    bool conflicts_solid_exactly(const TetVertices& t, VertexId u, Counters* counters) const;
-    void count(const perturbation::SosVerdict& v, PredicateKind kind, Counters* counters) const;
+    template <Tally T>
+    bool conflicts_solid_exactly(const TetVertices& t, VertexId u, T& tally) const;
 
     std::vector<Point3> points_;
     std::vector<std::uint32_t> keys_;

@@ -38,6 +38,15 @@ inline std::array<std::int32_t, 3> hull_triangle(const Tet& tet, std::size_t i) 
             static_cast<std::int32_t>(tet[static_cast<std::size_t>(s[1])])};
 }
 
+/// The facet matcher: neighbors[4t + i] is the tetrahedron sharing the facet opposite vertex i of
+/// tets[t], or -1 where no other has it (vertex ids < point_count, any orientation). Half-facets
+/// are bucketed by their lowest vertex (counting sort) and paired inside each bucket (hashing):
+/// O(m) expected time, 12 bytes per half-facet. \throws Error if a triangle has more than two
+/// tetrahedra (not a manifold), naming the tetrahedron as `names` lists it (default: `tets`).
+std::vector<std::int32_t> match_facets(std::span<const Tet> tets,
+                                       std::size_t point_count,
+                                       std::span<const Tet> names = {});
+
 /// Renumbers `tets` (positive right-hand volume, vertex ids < rank.size()) and matches their facets
 /// in O(m) expected time: facets are bucketed by their lowest-ranked vertex (counting sort) and
 /// paired inside each bucket (hashing), where the two other vertices identify them. `rank` is a

@@ -79,12 +79,12 @@ public:
     /// before anything changes. \throws Error for an index out of range, repeated, already
     /// removed or never inserted, for a vertex whose exact duplicate is kept (its copy would need
     /// inserting: remove the copies too), and when the rest would not span 3D.
-    void remove(std::span<const std::uint32_t> ids, RetriangulationCounters* counters = nullptr);
+    void remove(std::span<const std::uint32_t> ids);
 
     /// Bistellar flips (edit/flips.h) on the live complex; empty and unchanged when refused. The
     /// result is a triangulation, not necessarily Delaunay.
-    std::vector<TetId> flip23(HalfFacet h, RetriangulationCounters* counters = nullptr);
-    std::vector<TetId> flip32(TetId t, int i, int j, RetriangulationCounters* counters = nullptr);
+    std::vector<TetId> flip23(HalfFacet h);
+    std::vector<TetId> flip32(TetId t, int i, int j);
 
     /// The problems found at `level` (empty: valid).
     std::vector<std::string> check(CheckLevel level) const;
@@ -103,6 +103,8 @@ public:
     std::vector<std::uint32_t> redundant() const;
     /// The build's counters (TriangulateOptions::count); later operations are not counted here.
     const Counters& counters() const;
+    /// The work of every removal and flip since the build (edit/retriangulation_counters.h).
+    const RetriangulationCounters& edit_counters() const;
 
     /// The engine's view: vertex ids are insertion ranks, geometry().key(v) the input index.
     const Geometry& geometry() const;
@@ -139,6 +141,7 @@ private:
         /// By input index: its vertex id, or kNoVertex (a repeat). Made by the first removal.
         std::vector<VertexId> vertex_of;
         Counters counters;
+        RetriangulationCounters edits;
         std::vector<TetId> scratch;
     };
 
