@@ -47,7 +47,9 @@ install(TARGETS cavity_predicates cavity_perturbation cavity_core ${CAVITY_CORE_
         ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
         LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
         RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
-install(TARGETS cavity RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+if(CAVITY_BUILD_PROGRAMS)
+  install(TARGETS cavity RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+endif()
 install(DIRECTORY predicates/include/ perturbation/include/
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
         FILES_MATCHING PATTERN "*.h")
