@@ -105,7 +105,7 @@ def least_squares(columns, ys):
 def chi2_sf(x, k):
     """P(χ²_k ≥ x): the regularized upper incomplete gamma Q(k/2, x/2), by its series below
     a + 1 and by Lentz's continued fraction above (Numerical Recipes §6.2)."""
-    if x != x:
+    if x != x or k <= 0:
         return float("nan")
     if x == math.inf:
         return 0.0

@@ -69,6 +69,15 @@ def creation_dir(inp, paper):
     return inp
 
 
+def span_time(seconds):
+    """A duration as the report writes it: seconds, minutes or hours."""
+    if seconds < 120:
+        return f"{seconds:.0f} s"
+    if seconds < 7200:
+        return f"{seconds / 60:.0f} min"
+    return f"{seconds / 3600:.1f} h"
+
+
 def creation_section(inp):
     runs = read(os.path.join(inp, "creation.csv"))
     jrows = read(os.path.join(inp, "creation.j.csv"))
@@ -86,7 +95,8 @@ def creation_section(inp):
         "the bootstrap is the order's own first four affinely independent points, so a uniform "
         "order is exactly a uniform permutation (the widest-of-64 bootstrap biased Σj upwards); "
         "j of every created tetrahedron counted against all points (a certified squared distance "
-        "to its circumcentre, the exact perturbed insphere test near the sphere).")
+        "to its circumcentre, the exact perturbed insphere test near the sphere). Cost: "
+        f"{span_time(sum(float(r['time_s']) for r in runs))} of run time in all.")
     out.append("")
     out.append(f"*Creation rule.* {violations} violations in {orders_total} runs: every created "
                "tetrahedron is created when its last vertex arrives and deleted at its first "
