@@ -1,6 +1,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -58,6 +59,21 @@ TEST(IdentityTest, FollowsChiSquareWhenTheIdentityHolds) {
     }
     // The mean of 200 χ²_3 values has a standard deviation of √(6/200) ≈ 0.17.
     EXPECT_NEAR(sum / repetitions, 3.0, 0.7);
+}
+
+TEST(IdentityTest, UsesTheCovarianceBetweenBins) {
+    // Four orders of (h0, h1, h2) with h0 fixed at its exact value: mean (2.5, 3) against
+    // (2, 2.5), S = [[5/3, 1], [1, 2]] over the orders, so T² = 4 dᵀS⁻¹d = 5/7. Ignoring the
+    // covariance would give 4 (0.25 / (5/3) + 0.25 / 2) = 1.1.
+    IdentityTest test(std::vector<double>{7, 2, 2.5}, 4, 0.0);
+    for (const auto& [h1, h2] :
+         std::vector<std::pair<std::uint64_t, std::uint64_t>>{{1, 2}, {2, 2}, {3, 5}, {4, 3}}) {
+        test.add({{0, 7}, {1, h1}, {2, h2}});
+    }
+    const IdentityTest::Result r = test.result();
+    EXPECT_EQ(r.bins, 2u);
+    EXPECT_EQ(r.fixed, 1u);
+    EXPECT_NEAR(r.t2, 5.0 / 7.0, 1e-12);
 }
 
 TEST(IdentityTest, DetectsAShiftedMean) {

@@ -37,7 +37,7 @@ ArrayStorage complex_from_tets(std::span<const std::array<std::uint32_t, 4>> tet
     for (const auto& t : tets) {
         stored.push_back({t[1], t[0], t[2], t[3]});  // positive volume → orient3d > 0
         storage.add_tetrahedron(stored.back());
-        point_count = std::max<std::size_t>(point_count, *std::max_element(t.begin(), t.end()) + 1);
+        point_count = std::max(point_count, std::size_t{*std::max_element(t.begin(), t.end())} + 1);
     }
     // The one facet matcher (io/tet_adjacency.h) pairs the solid facets; slot t is stored[t].
     const std::vector<std::int32_t> across = match_facets(stored, point_count, tets);
