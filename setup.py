@@ -44,13 +44,17 @@ class CMakeBuild(build_ext):
         jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL", str(os.cpu_count() or 1))
         subprocess.run(["cmake", "--build", str(build), "--target", "cavity_python",
                         "--parallel", jobs], check=True)
-        built = sorted((build / "python").glob("cavity*" + pathlib.Path(target).suffix))
+        built = sorted((build / "python" / "cavity").glob("_cavity*" + target.suffix))
         if len(built) != 1:
-            sys.exit(f"setup.py: expected one built module in {build / 'python'}, found {built}")
+            sys.exit(f"setup.py: expected one built extension in {build / 'python' / 'cavity'}, "
+                     f"found {built}")
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(built[0], target)
 
 
 setup(version=project_version(),
-      ext_modules=[Extension("cavity", sources=[])],
+      packages=["cavity"],
+      package_dir={"cavity": "python/cavity"},
+      package_data={"cavity": ["py.typed", "*.pyi"]},
+      ext_modules=[Extension("cavity._cavity", sources=[])],
       cmdclass={"build_ext": CMakeBuild})

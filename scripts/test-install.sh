@@ -31,7 +31,7 @@ test "$(echo "orient3d 0 0 0 1 0 0 0 1 0 0 0 -1" | "$prefix/bin/cavity" sign)" =
 
 # The Python module, when it was built, imports from the prefix.
 python_dir="$prefix/lib/python3/dist-packages"
-if compgen -G "$python_dir/cavity.*.so" >/dev/null; then
+if compgen -G "$python_dir/cavity/_cavity.*.so" >/dev/null; then
   PYTHONPATH="$python_dir" /usr/bin/python3 -c \
     "import cavity; assert cavity.Delaunay([[0,0,0],[1,0,0],[0,1,0],[0,0,1]]).nsimplex == 1"
 fi

@@ -1,9 +1,16 @@
-// cavity.Delaunay: scipy.spatial.Delaunay's shape over cavity's live triangulation.
+// cavity._cavity.Triangulation: the engine behind cavity.Delaunay (python/cavity/_delaunay.py),
+// over cavity's live triangulation. Everything scipy's interface needs that is not plain numpy
+// arithmetic on the arrays is here: construction, exact point location, vertex neighbours,
+// incremental insertion and the exact validator, each without the GIL.
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <ctime>
+#include <limits>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,6 +23,7 @@
 #include "cavity/core/check/validate.h"
 #include "cavity/core/io/mesh_io.h"
 #include "cavity/core/io/tet_adjacency.h"
+#include "cavity/core/live/simplex_location.h"
 #include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "input_arrays.h"
@@ -58,18 +66,29 @@ py::array_t<std::int32_t> adopt(std::vector<T>&& values, const std::vector<py::s
     return array;
 }
 
-/// Everything one triangulation produces, computed without the GIL.
+/// Everything one construction produces, computed without the GIL.
 struct Built {
-    core::Triangulation triangulation;
+    std::optional<core::DelaunayTriangulation> live;  ///< kept for incremental insertion
+    core::Triangulation triangulation;                ///< duplicates, redundant, counters
     core::Adjacency adjacency;
     std::pair<double, double> order_s;  ///< {wall, CPU}
     std::pair<double, double> triangulate_s;
     std::pair<double, double> adjacency_s;
 };
 
+/// The scalar results of the live triangulation, as triangulate() returns them.
+void read_live(const core::DelaunayTriangulation& dt, core::Triangulation& t) {
+    t.duplicates = dt.duplicates();
+    t.redundant = dt.redundant();
+    t.counters = dt.counters();
+    t.hull_triangles = dt.hull_triangle_count();
+    t.storage_bytes = dt.storage().bytes();
+}
+
 Built build(const core::PointSet& input,
             const core::OrderOptions& order_options,
-            const core::TriangulateOptions& options) {
+            const core::TriangulateOptions& options,
+            bool incremental) {
     Built b;
     Stopwatch clock;
     const core::InsertionOrder order = core::make_insertion_order(input.points, order_options);
@@ -77,15 +96,14 @@ Built build(const core::PointSet& input,
     clock = Stopwatch();
     if (options.storage == core::StorageKind::kArray) {
         // The live triangulation's own adjacency, read off in linear time: no facet matching.
-        const core::DelaunayTriangulation dt(input, order.sequence, options);
+        core::DelaunayTriangulation dt(input, order.sequence, options);
         b.triangulate_s = clock.elapsed();
         clock = Stopwatch();
         b.adjacency = dt.adjacency();
-        b.triangulation.duplicates = dt.duplicates();
-        b.triangulation.redundant = dt.redundant();
-        b.triangulation.counters = dt.counters();
-        b.triangulation.hull_triangles = b.adjacency.hull.size();
-        b.triangulation.storage_bytes = dt.storage().bytes();
+        read_live(dt, b.triangulation);
+        if (incremental) {
+            b.live.emplace(std::move(dt));
+        }
         b.adjacency_s = clock.elapsed();
         return b;
     }
@@ -104,15 +122,17 @@ Built build(const core::PointSet& input,
     return b;
 }
 
-class Delaunay {
+class Triangulation {
 public:
-    Delaunay(const py::handle& points,
-             const py::handle& weights,
-             const std::string& order,
-             const std::string& locate,
-             std::uint64_t seed,
-             const std::string& storage,
-             const py::object& progress)
+    Triangulation(const py::handle& points,
+                  const py::handle& weights,
+                  const std::string& order,
+                  const std::string& locate,
+                  std::uint64_t seed,
+                  const std::string& storage,
+                  bool count,
+                  bool incremental,
+                  const py::object& progress)
         : input_(to_point_set(points, weights)) {
         core::OrderOptions order_options;
         order_options.kind = core::parse_order_kind(order);
@@ -120,8 +140,12 @@ public:
         core::TriangulateOptions options;
         options.locate = core::parse_locate_kind(locate);
         options.storage = core::parse_storage_kind(storage);
-        options.count = true;
+        options.count = count;
         options.seed = seed;
+        if (incremental && options.storage != core::StorageKind::kArray) {
+            throw py::value_error(
+                "incremental=True needs storage=\"array\": the face hash table is not kept live");
+        }
         if (!progress.is_none() && !PyCallable_Check(progress.ptr())) {
             throw py::type_error("progress must be callable as progress(done, total), or None");
         }
@@ -139,20 +163,111 @@ public:
         Built b;
         {
             py::gil_scoped_release nogil;
-            b = build(input_, order_options, options);
+            b = build(input_, order_options, options, incremental);
         }
-        publish(std::move(b), seed, order, locate, storage);
+        live_ = std::move(b.live);
+        // The plain engine counts nothing: no zeros that would read as measurements.
+        stats_ = count ? counters_dict(b.triangulation.counters) : py::dict();
+        stats_["engine"] = count ? "counting" : "plain";
+        stats_["order"] = order;
+        stats_["locate"] = locate;
+        stats_["storage"] = storage;
+        stats_["seed"] = seed;
+        py::dict timings;
+        timings["order_s"] = b.order_s.first;
+        timings["triangulate_s"] = b.triangulate_s.first;
+        timings["adjacency_s"] = b.adjacency_s.first;
+        timings["order_cpu_s"] = b.order_s.second;
+        timings["triangulate_cpu_s"] = b.triangulate_s.second;
+        timings["adjacency_cpu_s"] = b.adjacency_s.second;
+        stats_["timings"] = timings;
+        publish(std::move(b.adjacency), std::move(b.triangulation));
+    }
+
+    /// Inserts the rows of `points` (and `weights`) into the live triangulation, in row order, so
+    /// that their perturbation keys are their rows in the concatenated input and the result is
+    /// the triangulation of all points so far, whatever the batches.
+    void add_points(const py::handle& points, const py::handle& weights) {
+        if (!live_) {
+            throw py::value_error(
+                "add_points needs a triangulation made with incremental=True and not closed");
+        }
+        if (weights.is_none() == input_.weighted()) {
+            throw py::value_error(input_.weighted()
+                                      ? "this triangulation is weighted: add_points needs weights"
+                                      : "this triangulation is unweighted: add_points takes no "
+                                        "weights");
+        }
+        const core::PointSet batch = to_point_set(points, weights);
+        if (input_.size() + batch.size() >
+            static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
+            throw py::value_error("more than 2^31-1 points cannot be numbered by int32 indices");
+        }
+        core::Adjacency adjacency;
+        core::Triangulation t;
+        {
+            py::gil_scoped_release nogil;
+            for (std::size_t i = 0; i < batch.size(); ++i) {
+                live_->insert(batch.points[i], batch.weighted() ? batch.weights[i] : 0.0);
+            }
+            adjacency = live_->adjacency();
+            read_live(*live_, t);
+        }
+        input_.points.insert(input_.points.end(), batch.points.begin(), batch.points.end());
+        input_.weights.insert(input_.weights.end(), batch.weights.begin(), batch.weights.end());
+        stats_["points_added"] = stats_["points_added"].cast<std::size_t>() + batch.size();
+        publish(std::move(adjacency), std::move(t));
+    }
+
+    /// Ends incremental mode: the live triangulation is freed; the arrays stay.
+    void close() { live_.reset(); }
+
+    bool incremental() const { return live_.has_value(); }
+
+    /// For each row of the (k, 3) `xi`, the lowest-numbered simplex whose closure holds it, or
+    /// -1 (outside the hull, or a NaN coordinate). Each walk starts where the last one ended.
+    py::array_t<std::int32_t> find_simplex(const py::handle& xi) const {
+        const DoubleArray q(py::module_::import("numpy").attr("asarray")(xi, "float64"));
+        if (q.ndim() != 2 || q.shape(1) != 3) {
+            throw py::value_error("find_simplex needs points of shape (k, 3)");
+        }
+        const auto k = static_cast<std::size_t>(q.shape(0));
+        std::vector<std::int32_t> found(k, -1);
+        {
+            py::gil_scoped_release nogil;
+            const core::SimplexLocator locator(input_.points, simplices(), neighbors());
+            const double* x = q.data();
+            std::int32_t start = 0;
+            for (std::size_t i = 0; i < k; ++i) {
+                const core::Point3 p{x[3 * i], x[3 * i + 1], x[3 * i + 2]};
+                if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+                    continue;
+                }
+                found[i] = locator.find(p, start);
+                start = found[i] >= 0 ? found[i] : start;
+            }
+        }
+        return adopt(std::move(found), {static_cast<py::ssize_t>(k)});
+    }
+
+    /// scipy's (indptr, indices).
+    py::tuple vertex_neighbor_vertices() const {
+        core::VertexNeighbors vn;
+        {
+            py::gil_scoped_release nogil;
+            vn = core::vertex_neighbors(simplices(), input_.size());
+        }
+        const auto n = static_cast<py::ssize_t>(vn.indptr.size());
+        const auto e = static_cast<py::ssize_t>(vn.indices.size());
+        return py::make_tuple(adopt(std::move(vn.indptr), {n}), adopt(std::move(vn.indices), {e}));
     }
 
     /// Runs the exact validator (core::validate) on this triangulation.
     bool check() const {
-        const auto* data = reinterpret_cast<const core::Tet*>(simplices_.data());
-        const std::span<const core::Tet> simplices(data,
-                                                   static_cast<std::size_t>(simplices_.shape(0)));
         core::ValidationReport report;
         {
             py::gil_scoped_release nogil;
-            report = core::validate(input_, simplices);
+            report = core::validate(input_, simplices());
         }
         if (report.ok()) {
             return true;
@@ -175,11 +290,16 @@ public:
     py::dict stats_;
 
 private:
-    void publish(Built&& b,
-                 std::uint64_t seed,
-                 const std::string& order,
-                 const std::string& locate,
-                 const std::string& storage) {
+    std::span<const core::Tet> simplices() const {
+        return {reinterpret_cast<const core::Tet*>(simplices_.data()),
+                static_cast<std::size_t>(simplices_.shape(0))};
+    }
+
+    std::span<const std::int32_t> neighbors() const {
+        return {neighbors_.data(), static_cast<std::size_t>(neighbors_.size())};
+    }
+
+    void publish(core::Adjacency&& adjacency, core::Triangulation&& t) {
         const auto n = static_cast<py::ssize_t>(input_.size());
         py::array_t<double> points({n, py::ssize_t{3}});
         auto* p = points.mutable_data();
@@ -197,69 +317,35 @@ private:
         } else {
             weights_ = py::none();
         }
-        core::Triangulation& t = b.triangulation;
-        const auto m = static_cast<py::ssize_t>(b.adjacency.simplices.size());
-        const auto hull = static_cast<py::ssize_t>(b.adjacency.hull.size());
+        const auto m = static_cast<py::ssize_t>(adjacency.simplices.size());
+        const auto hull = static_cast<py::ssize_t>(adjacency.hull.size());
         const auto dup = static_cast<py::ssize_t>(t.duplicates.size());
         const auto red = static_cast<py::ssize_t>(t.redundant.size());
-
-        py::dict stats = counters_dict(t.counters);
-        stats["points"] = input_.size();
-        stats["tets"] = b.adjacency.simplices.size();
-        stats["hull_triangles"] = t.hull_triangles;
-        stats["storage_bytes"] = t.storage_bytes;
-        stats["order"] = order;
-        stats["locate"] = locate;
-        stats["storage"] = storage;
-        stats["seed"] = seed;
-        py::dict timings;
-        timings["order_s"] = b.order_s.first;
-        timings["triangulate_s"] = b.triangulate_s.first;
-        timings["adjacency_s"] = b.adjacency_s.first;
-        timings["order_cpu_s"] = b.order_s.second;
-        timings["triangulate_cpu_s"] = b.triangulate_s.second;
-        timings["adjacency_cpu_s"] = b.adjacency_s.second;
-        stats["timings"] = timings;
-        stats_ = stats;
-
-        simplices_ = adopt(std::move(b.adjacency.simplices), {m, 4});
-        neighbors_ = adopt(std::move(b.adjacency.neighbors), {m, 4});
-        convex_hull_ = adopt(std::move(b.adjacency.hull), {hull, 3});
-        vertex_to_simplex_ = adopt(std::move(b.adjacency.vertex_to_simplex), {n});
+        stats_["points"] = input_.size();
+        stats_["tets"] = adjacency.simplices.size();
+        stats_["hull_triangles"] = t.hull_triangles;
+        stats_["storage_bytes"] = t.storage_bytes;
+        if (!stats_.contains("points_added")) {
+            stats_["points_added"] = 0;
+        }
+        simplices_ = adopt(std::move(adjacency.simplices), {m, 4});
+        neighbors_ = adopt(std::move(adjacency.neighbors), {m, 4});
+        convex_hull_ = adopt(std::move(adjacency.hull), {hull, 3});
+        vertex_to_simplex_ = adopt(std::move(adjacency.vertex_to_simplex), {n});
         duplicates_ = adopt(std::move(t.duplicates), {dup, 2});
         redundant_ = adopt(std::move(t.redundant), {red});
     }
 
     core::PointSet input_;
+    std::optional<core::DelaunayTriangulation> live_;
 };
 
 }  // namespace
 
 void bind_delaunay(py::module_& m) {
-    py::class_<Delaunay>(m, "Delaunay", R"doc(
-Exact 3D Delaunay (or weighted Delaunay / regular) triangulation.
-
-Delaunay(points, weights=None, order="brio", locate="walk", seed=0, storage="array", progress=None)
-
-points   : (n, 3) array of finite numbers (converted to float64).
-weights  : None, or (n,) finite weights: the regular triangulation of the weighted points.
-order    : insertion order: "brio" (default), "hilbert", "zorder", "random", "input".
-locate   : point location: "walk" (default), "conflict-graph" (one cell per point, the book's
-           §5.4) or "conflict-graph-all" (every conflict kept; stats then hold Theorem 5.4's
-           conflicts_created).
-seed     : seed of the order's and the walk's random choices (results are reproducible).
-storage  : "array" (default) or "hash" (the book's face hash table).
-progress : None, or a callable progress(done, total) called now and then (with the GIL).
-
-The result is the Delaunay triangulation under a symbolic perturbation keyed on the row index, so
-it exists and is unique for every input with an affinely 3D set of distinct points: degenerate
-inputs (grids, cospherical points) get a valid triangulation with no flat tetrahedron.
-Exact repeats are not vertices (see `duplicates`); weighted points whose lifted point is above the
-lower hull are not vertices (see `redundant`).
-
-Raises ValueError (naming the row) for a wrong shape, NaN or infinity, fewer than 4 distinct points
-or all points coplanar or collinear (naming the affine dimension). The GIL is released while
-triangulating.
+    py::class_<Triangulation>(m, "Triangulation", R"doc(
+The engine behind cavity.Delaunay (use that class): one exact Delaunay or regular triangulation,
+its arrays, and the operations that need the engine.
 )doc")
         .def(py::init<const py::handle&,
                       const py::handle&,
@@ -267,55 +353,33 @@ triangulating.
                       const std::string&,
                       std::uint64_t,
                       const std::string&,
+                      bool,
+                      bool,
                       const py::object&>(),
              py::arg("points"),
-             py::arg("weights") = py::none(),
-             py::arg("order") = "brio",
-             py::arg("locate") = "walk",
-             py::arg("seed") = 0,
-             py::arg("storage") = "array",
-             py::arg("progress") = py::none())
-        .def_readonly("points", &Delaunay::points_, "(n, 3) float64: the input points")
-        .def_readonly("weights", &Delaunay::weights_, "(n,) float64 weights, or None")
-        .def_readonly("simplices",
-                      &Delaunay::simplices_,
-                      "(m, 4) int32: tetrahedra as row indices, each with positive volume by "
-                      "the right-hand rule (TetGen's and VTK's convention; cavity.orient3d "
-                      "of each row is -1)")
-        .def_readonly("neighbors",
-                      &Delaunay::neighbors_,
-                      "(m, 4) int32: neighbors[t, i] is the tetrahedron opposite vertex i of t, "
-                      "-1 on the convex hull")
-        .def_readonly("convex_hull",
-                      &Delaunay::convex_hull_,
-                      "(h, 3) int32: hull triangles, counter-clockwise seen from outside")
-        .def_readonly("vertex_to_simplex",
-                      &Delaunay::vertex_to_simplex_,
-                      "(n,) int32: a tetrahedron having the point as a vertex, -1 for points "
-                      "that are not vertices (repeats, redundant)")
-        .def_readonly(
-            "duplicates",
-            &Delaunay::duplicates_,
-            "(k, 2) int32: rows [point, first row with the same coordinates (and weight)]")
-        .def_readonly("redundant",
-                      &Delaunay::redundant_,
-                      "(r,) int32: weighted points that are not vertices, increasing")
-        .def_readonly(
-            "stats",
-            &Delaunay::stats_,
-            "dict: instrumentation counters, stage_calls and timings (wall and CPU seconds)")
-        .def_property_readonly("nsimplex", [](const Delaunay& d) { return d.simplices_.shape(0); })
-        .def_property_readonly("npoints", [](const Delaunay& d) { return d.points_.shape(0); })
-        .def_property_readonly("ndim", [](const Delaunay&) { return 3; })
-        .def(
-            "check",
-            &Delaunay::check,
-            "Validates the triangulation exactly (cavity::core::validate): returns True, or raises "
-            "cavity.ValidationError listing the problems.")
-        .def("__repr__", [](const Delaunay& d) {
-            return "<cavity.Delaunay: " + std::to_string(d.points_.shape(0)) + " points, " +
-                   std::to_string(d.simplices_.shape(0)) + " tetrahedra>";
-        });
+             py::arg("weights"),
+             py::arg("order"),
+             py::arg("locate"),
+             py::arg("seed"),
+             py::arg("storage"),
+             py::arg("count"),
+             py::arg("incremental"),
+             py::arg("progress"))
+        .def_readonly("points", &Triangulation::points_)
+        .def_readonly("weights", &Triangulation::weights_)
+        .def_readonly("simplices", &Triangulation::simplices_)
+        .def_readonly("neighbors", &Triangulation::neighbors_)
+        .def_readonly("convex_hull", &Triangulation::convex_hull_)
+        .def_readonly("vertex_to_simplex", &Triangulation::vertex_to_simplex_)
+        .def_readonly("duplicates", &Triangulation::duplicates_)
+        .def_readonly("redundant", &Triangulation::redundant_)
+        .def_readonly("stats", &Triangulation::stats_)
+        .def_property_readonly("incremental", &Triangulation::incremental)
+        .def("add_points", &Triangulation::add_points, py::arg("points"), py::arg("weights"))
+        .def("close", &Triangulation::close)
+        .def("find_simplex", &Triangulation::find_simplex, py::arg("xi"))
+        .def("vertex_neighbor_vertices", &Triangulation::vertex_neighbor_vertices)
+        .def("check", &Triangulation::check);
 }
 
 }  // namespace cavity::python

@@ -3,7 +3,8 @@
 #include "bindings.h"
 #include "cavity/core/version.h"
 
-PYBIND11_MODULE(cavity, m) {
+// The extension of the `cavity` package (python/cavity/__init__.py re-exports it).
+PYBIND11_MODULE(_cavity, m) {
     m.doc() =
         "Exact, instrumented 3D Delaunay triangulation (Bowyer-Watson with exact predicates and "
         "symbolic perturbation): never a flat or inverted tetrahedron, whatever the input.";

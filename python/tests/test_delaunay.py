@@ -25,7 +25,7 @@ def test_random_points_are_well_formed_and_valid(rng):
 def test_every_order_and_locator_gives_the_same_tetrahedra(rng, order, locate):
     points = rng.random((300, 3))
     reference = sorted_rows(cavity.Delaunay(points).simplices)
-    d = cavity.Delaunay(points, order=order, locate=locate, seed=7)
+    d = cavity.Delaunay(points, order=order, locate=locate, seed=7, count=True)
     assert sorted_rows(d.simplices) == reference
     assert d.stats["order"] == order and d.stats["locate"] == locate
     # Only the full conflict graph keeps (and so counts) every conflict; all are freed by the end.
@@ -37,14 +37,15 @@ def test_every_order_and_locator_gives_the_same_tetrahedra(rng, order, locate):
 def test_hash_storage_gives_the_same_tetrahedra(rng):
     points = rng.random((300, 3))
     a = cavity.Delaunay(points)
-    b = cavity.Delaunay(points, storage="hash")
+    b = cavity.Delaunay(points, storage="hash", count=True)
     assert sorted_rows(a.simplices) == sorted_rows(b.simplices)
     assert b.stats["hash_probes"] > 0
 
 
 def test_stats_hold_the_counters_and_timings(rng):
-    d = cavity.Delaunay(rng.random((400, 3)))
+    d = cavity.Delaunay(rng.random((400, 3)), count=True)
     st = d.stats
+    assert st["engine"] == "counting"
     assert st["insertions"] == 396  # the first four are the bootstrap tetrahedron
     assert st["tets"] == d.nsimplex
     assert st["tets_created"] - st["tets_deleted"] == d.nsimplex
@@ -69,7 +70,7 @@ def test_weighted_points_report_redundant_ones(rng):
     centre = int(np.argmin(np.linalg.norm(points - 0.5, axis=1)))
     weights = np.zeros(200)
     weights[centre] = -1.0  # an interior point lifted far above the others: never a vertex
-    d = cavity.Delaunay(points, weights)
+    d = cavity.Delaunay(points, weights=weights)
     assert centre in d.redundant
     assert np.all(d.vertex_to_simplex[d.redundant] == -1)
     assert d.weights.shape == (200,)
@@ -79,7 +80,7 @@ def test_weighted_points_report_redundant_ones(rng):
 
 def test_zero_weights_give_the_unweighted_triangulation(rng):
     points = rng.random((200, 3))
-    assert sorted_rows(cavity.Delaunay(points, np.zeros(200)).simplices) == sorted_rows(
+    assert sorted_rows(cavity.Delaunay(points, weights=np.zeros(200)).simplices) == sorted_rows(
         cavity.Delaunay(points).simplices)
 
 

@@ -36,7 +36,7 @@ def test_complex_points_are_refused_not_truncated(make):
     with pytest.raises(ValueError, match="points must be real numbers, got complex"):
         cavity.Delaunay(make(cube()))
     with pytest.raises(ValueError, match="weights must be real numbers, got complex"):
-        cavity.Delaunay(cube(), np.zeros(8) + 0j)
+        cavity.Delaunay(cube(), weights=np.zeros(8) + 0j)
 
 
 class _NoMemory:
@@ -73,11 +73,11 @@ def test_collinear_input_names_the_affine_dimension():
 
 def test_weights_of_the_wrong_length_or_non_finite():
     with pytest.raises(ValueError, match=r"weights must have shape \(8,\)"):
-        cavity.Delaunay(cube(), np.zeros(7))
+        cavity.Delaunay(cube(), weights=np.zeros(7))
     w = np.zeros(8)
     w[6] = np.nan
     with pytest.raises(ValueError, match=r"weights row 6 is not finite"):
-        cavity.Delaunay(cube(), w)
+        cavity.Delaunay(cube(), weights=w)
 
 
 def test_unknown_option_names():

@@ -1,6 +1,7 @@
 #include "cavity/core/io/tet_adjacency.h"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 #include "cavity/core/base/error.h"
@@ -159,6 +160,51 @@ Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32
             }
             out.hull.push_back(hull_triangle(tet, f));
         }
+    }
+    return out;
+}
+
+VertexNeighbors vertex_neighbors(std::span<const Tet> tets, std::size_t point_count) {
+    // incident[begin[v] .. begin[v + 1]): the tetrahedra having v as a vertex.
+    std::vector<std::size_t> begin(point_count + 1, 0);
+    for (const Tet& t : tets) {
+        for (std::uint32_t v : t) {
+            ++begin[v + 1];
+        }
+    }
+    for (std::size_t v = 1; v <= point_count; ++v) {
+        begin[v] += begin[v - 1];
+    }
+    std::vector<std::uint32_t> incident(begin.back());
+    {
+        std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
+        for (std::size_t t = 0; t < tets.size(); ++t) {
+            for (std::uint32_t v : tets[t]) {
+                incident[fill[v]++] = static_cast<std::uint32_t>(t);
+            }
+        }
+    }
+    VertexNeighbors out;
+    out.indptr.reserve(point_count + 1);
+    out.indptr.push_back(0);
+    std::vector<std::int32_t> around;
+    for (std::size_t v = 0; v < point_count; ++v) {
+        around.clear();
+        for (std::size_t k = begin[v]; k < begin[v + 1]; ++k) {
+            for (std::uint32_t u : tets[incident[k]]) {
+                if (u != v) {
+                    around.push_back(static_cast<std::int32_t>(u));
+                }
+            }
+        }
+        std::sort(around.begin(), around.end());
+        around.erase(std::unique(around.begin(), around.end()), around.end());
+        out.indices.insert(out.indices.end(), around.begin(), around.end());
+        if (out.indices.size() >
+            static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
+            throw Error("vertex_neighbors: more than 2^31 - 1 vertex-edge incidences");
+        }
+        out.indptr.push_back(static_cast<std::int32_t>(out.indices.size()));
     }
     return out;
 }

@@ -347,46 +347,37 @@ Adjacency DelaunayTriangulation::adjacency() const {
     const State& s = *state_;
     const ArrayStorage& storage = s.storage;
     const std::size_t slots = storage.capacity();
-    // Counting sort of the solid tetrahedra by their lowest vertex id (insertion rank).
-    std::vector<std::uint32_t> begin(s.geometry.size() + 1, 0);
-    const auto lowest = [&](const TetVertices& v) {
-        return std::min(std::min(v[0], v[1]), std::min(v[2], v[3]));
-    };
-    for (TetId t = 0; t < slots; ++t) {
-        if (storage.alive(t) && !is_ghost(storage.vertices(t))) {
-            ++begin[lowest(storage.vertices(t)) + 1];
-        }
-    }
-    for (std::size_t v = 1; v < begin.size(); ++v) {
-        begin[v] += begin[v - 1];
-    }
-    const std::size_t m = begin.back();
+    // Storage order, read sequentially. The slots are reused by insertions that follow a
+    // space-filling curve, so tetrahedra near in space are mostly near in the storage already;
+    // sorting them by their lowest vertex instead cost random reads of every record (0.95 s of
+    // the 5.2 s of a 10^6-point build from Python).
     std::vector<std::int32_t> index(slots, -1);
-    std::vector<TetId> by_rank(m);
+    std::int32_t m = 0;
     for (TetId t = 0; t < slots; ++t) {
         if (storage.alive(t) && !is_ghost(storage.vertices(t))) {
-            const std::uint32_t o = begin[lowest(storage.vertices(t))]++;
-            index[t] = static_cast<std::int32_t>(o);
-            by_rank[o] = t;
+            index[t] = m++;
         }
     }
     Adjacency out;
-    out.simplices.resize(m);
-    out.neighbors.assign(4 * m, -1);
+    out.simplices.resize(static_cast<std::size_t>(m));
+    out.neighbors.resize(4 * static_cast<std::size_t>(m));
     out.vertex_to_simplex.assign(s.next_key, -1);
-    for (std::size_t o = 0; o < m; ++o) {
-        const TetId t = by_rank[o];
+    for (TetId t = 0; t < slots; ++t) {
+        const std::int32_t o = index[t];
+        if (o < 0) {
+            continue;
+        }
         const Tet tet = api_tet(s.geometry, storage.vertices(t));
-        out.simplices[o] = tet;
+        const auto at = static_cast<std::size_t>(o);
+        out.simplices[at] = tet;
         for (std::size_t i = 0; i < 4; ++i) {
-            out.vertex_to_simplex[tet[i]] = static_cast<std::int32_t>(o);
+            out.vertex_to_simplex[tet[i]] = o;
             const HalfFacet across = storage.adjacent(t, kMirror[i]);
             const std::int32_t neighbour = index[tet_of(across)];
-            out.neighbors[4 * o + i] = neighbour;
-            if (neighbour >= 0) {
-                continue;
+            out.neighbors[4 * at + i] = neighbour;
+            if (neighbour < 0) {
+                out.hull.push_back(hull_triangle(tet, i));
             }
-            out.hull.push_back(hull_triangle(tet, i));
         }
     }
     return out;

@@ -113,17 +113,6 @@ TEST(DelaunayTriangulation, AdjacencyEqualsTheMatchedOne) {
             const Tet& tet = live.simplices[static_cast<std::size_t>(t)];
             EXPECT_NE(std::find(tet.begin(), tet.end(), v), tet.end());
         }
-        // Sorted by the lowest insertion rank (the bootstrap four first, then the input order).
-        std::vector<VertexId> rank(ps.size());
-        for (VertexId v = 0; v < dt.geometry().size(); ++v) {
-            rank[dt.geometry().key(v)] = v;
-        }
-        const auto lowest = [&](const Tet& t) {
-            return std::min(std::min(rank[t[0]], rank[t[1]]), std::min(rank[t[2]], rank[t[3]]));
-        };
-        for (std::size_t t = 1; t < live.simplices.size(); ++t) {
-            EXPECT_LE(lowest(live.simplices[t - 1]), lowest(live.simplices[t]));
-        }
     }
 }
 

@@ -57,4 +57,16 @@ std::vector<std::int32_t> match_facets(std::span<const Tet> tets,
 /// triangle has more than two tetrahedra (not a manifold).
 Adjacency build_adjacency(std::span<const Tet> tets, std::span<const std::uint32_t> rank);
 
+/// scipy's vertex_neighbor_vertices: the neighbours of vertex v (the vertices sharing an edge with
+/// it) are indices[indptr[v] .. indptr[v + 1]), increasing; points that are no vertex have none.
+struct VertexNeighbors {
+    std::vector<std::int32_t> indptr;   ///< point_count + 1 offsets
+    std::vector<std::int32_t> indices;  ///< each edge twice
+};
+
+/// The edges of `tets` (vertex ids < point_count), per vertex: its tetrahedra by a counting sort,
+/// then the other vertices of each, sorted and made unique. O(m log d) for vertex degree d;
+/// 16 bytes per tetrahedron of scratch. \throws Error when an edge count exceeds the int32 range.
+VertexNeighbors vertex_neighbors(std::span<const Tet> tets, std::size_t point_count);
+
 }  // namespace cavity::core

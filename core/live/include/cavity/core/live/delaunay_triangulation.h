@@ -93,8 +93,8 @@ public:
     std::vector<std::array<std::uint32_t, 4>> tets() const;
 
     /// scipy's and TetGen's views (io/tet_adjacency.h), read off the live adjacency in linear time
-    /// (no facet matching): simplices sorted by their lowest vertex in insertion order, so that
-    /// tetrahedra near in space are near in the array.
+    /// (no facet matching): simplices in storage order, which the space-filling insertion order
+    /// makes mostly local (tetrahedra near in space near in the array).
     Adjacency adjacency() const;
 
     /// {point, the vertex it repeats}, input indices.
