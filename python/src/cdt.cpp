@@ -112,10 +112,10 @@ std::string polygon_name(std::size_t p) {
     return "polygon " + std::to_string(p);
 }
 
-/// A sequence in Python's sense, but not a string (a str is a sequence of str).
+/// A sequence in Python's sense (numpy arrays are), but not a string (a str is a sequence of str).
 bool is_sequence(const py::handle& h) {
-    return (py::isinstance<py::sequence>(h) || py::isinstance<py::array>(h)) &&
-           !py::isinstance<py::str>(h) && !py::isinstance<py::bytes>(h);
+    return py::isinstance<py::sequence>(h) && !py::isinstance<py::str>(h) &&
+           !py::isinstance<py::bytes>(h);
 }
 
 std::vector<std::uint32_t> loop_of(const py::handle& item,
@@ -215,7 +215,9 @@ std::vector<core::PlcFacet> facets_of_array(const py::handle& polygons, std::siz
 }
 
 std::vector<core::PlcFacet> facets_of(const py::handle& polygons, std::size_t point_count) {
-    if (py::isinstance<py::array>(polygons)) {
+    // An object array holds polygons of different sizes (numpy's ragged array): the slow path.
+    if (py::isinstance<py::array>(polygons) &&
+        py::reinterpret_borrow<py::array>(polygons).dtype().kind() != 'O') {
         return facets_of_array(polygons, point_count);
     }
     if (!is_sequence(polygons)) {
@@ -650,9 +652,10 @@ Raises
 ValueError
     Naming the polygon, segment or row and the bad value: wrong shapes or dtypes, NaN or
     infinity, indices negative or out of range, a corner repeated in a loop, fewer than 3
-    corners, a polygon not flat or collinear. With the core's message: coinciding points, a PLC
-    that is not edge-protected (without protect), an edge through a polygon, overlapping
-    polygons, crossing loops, a region point outside the convex hull.
+    corners, a polygon not flat or collinear. With the core's message, which calls polygon i
+    "facet i" as TetGen does: coinciding points, a PLC that is not edge-protected (without
+    protect), an edge through a polygon, overlapping polygons, crossing loops, a hole point on a
+    loop side. A region point outside the convex hull names its row.
 )doc");
 }
 
