@@ -5,6 +5,7 @@ import pathlib
 import shutil
 import subprocess
 import sys
+import threading
 
 import numpy as np
 import pytest
@@ -169,6 +170,38 @@ def test_schoenhardt_polyhedron_needs_protection():
         assert s in c.faces
     for marker, loop in zip(markers, polygons):
         assert_polygon_is_union_of_faces(c, marker, loop, loop_area(points, loop))
+
+
+def test_polygon_in_a_point_cloud_is_inserted_by_flips():
+    square = [[0.125, 0.125, 0.5], [0.875, 0.125, 0.5], [0.875, 0.875, 0.5], [0.125, 0.875, 0.5]]
+    points = np.vstack([square, np.random.default_rng(5).random((200, 3))])
+    c = cavity.cdt(points, [[0, 1, 2, 3]], markers=[4], protect=True)
+    st = c.stats
+    assert st["flips_23"] + st["flips_32"] > 0 and st["events_queued"] > 0
+    assert st["region_tets"] > 0 and st["certify_calls"] > 0
+    assert st["protection_points"] == len(c.steiner) > 0 and st["protection_rounds"] > 0
+    assert_positive(c)
+    assert_polygon_is_union_of_faces(c, 4, [0, 1, 2, 3], 0.75**2)
+    # The square's sides were split where a random point spoiled them: at z = 1/2, on a side.
+    steiner = c.points[c.steiner]
+    assert np.all(steiner[:, 2] == 0.5)
+    assert np.all(np.isin(steiner[:, :2], [0.125, 0.875]).any(axis=1))
+
+
+def test_threads_get_the_same_mesh():
+    points, polygons, _ = schoenhardt(twisted=True)
+    results = [None] * 4
+
+    def work(i):
+        c = cavity.cdt(points, polygons, protect=True)
+        results[i] = (c.simplices.tobytes(), c.points.tobytes())
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert results[0] is not None and all(r == results[0] for r in results)
 
 
 def box_with_window(top):
