@@ -322,9 +322,9 @@ bool collinear(const Point3& a, const Point3& b, const Point3& c) {
     return flat(x, y) && flat(y, z) && flat(z, x);
 }
 
-/// The checks read_poly makes of each facet of a .poly file, which build_cdt leaves to whoever
-/// built the PLC: corners not all collinear, every corner and hole point in the plane (exact).
-/// Without them a bent polygon would reach polygon insertion, whose messages would not say why.
+/// The checks read_poly makes of each facet of a .poly file: corners not all collinear, every
+/// corner and hole point in the plane (exact). build_cdt and plc_violations take them as given
+/// (plc_validity.h), so a PLC made in memory is checked here.
 /// \throws core::Error naming the polygon.
 void check_facet_geometry(const core::Plc& plc, std::size_t f) {
     const std::string name = polygon_name(f);
@@ -365,7 +365,7 @@ void check_facet_geometry(const core::Plc& plc, std::size_t f) {
 }
 
 /// The row of the first region point outside the mesh, for a message naming it (core names the
-/// .poly line, and these rows have none).
+/// .poly line, and these rows have none); regions.size() when every point is inside.
 std::size_t region_outside(const core::Cdt& cdt) {
     core::Plc probe;
     probe.points = cdt.plc.points;
@@ -407,7 +407,11 @@ Built build(core::Plc plc, const core::CdtOptions& options, bool with_regions) {
         try {
             b.regions = core::region_markers(b.cdt.plc, b.cdt.tets, b.cdt.faces);
         } catch (const core::Error&) {
-            throw core::Error("regions row " + std::to_string(region_outside(b.cdt)) +
+            const std::size_t row = region_outside(b.cdt);
+            if (row == b.cdt.plc.regions.size()) {
+                throw;  // not a point outside: core's message as it is
+            }
+            throw core::Error("regions row " + std::to_string(row) +
                               ": the point lies outside the tetrahedralization (the convex hull "
                               "of the points)");
         }
