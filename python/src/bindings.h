@@ -11,6 +11,8 @@ namespace py = pybind11;
 void bind_errors(py::module_& m);
 /// cavity.Delaunay.
 void bind_delaunay(py::module_& m);
+/// cavity.cdt and cavity.CDT.
+void bind_cdt(py::module_& m);
 /// cavity.orient3d, cavity.insphere, cavity.orient4d over arrays of queries.
 void bind_predicates(py::module_& m);
 

@@ -11,5 +11,6 @@ PYBIND11_MODULE(_cavity, m) {
     m.attr("__version__") = cavity::core::kVersion;
     cavity::python::bind_errors(m);
     cavity::python::bind_delaunay(m);
+    cavity::python::bind_cdt(m);
     cavity::python::bind_predicates(m);
 }
