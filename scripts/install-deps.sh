@@ -9,7 +9,7 @@ packages=(
   libgtest-dev libbenchmark-dev libcgal-dev
   python3-matplotlib tetgen pybind11-dev python3-dev python3-numpy python3-pytest python3-scipy
   zlib1g-dev python3-meshio python3-vtk9
-  python3-pip python3-setuptools python3-wheel python3-venv
+  python3-pip python3-setuptools python3-wheel python3-venv mypy
 )
 
 missing=()

@@ -38,22 +38,6 @@ def _refuse_unsupported(points: Any, furthest_site: bool, qhull_options: Optiona
                          f"triangulates points in 3-D; {advice}")
 
 
-def _inverse_or_nan(t: np.ndarray) -> np.ndarray:
-    """Inverses of a stack of 3x3 matrices; NaN for the numerically singular ones (scipy's rule
-    for degenerate simplices: a tetrahedron exact arithmetic calls solid can still be too thin for
-    a floating-point inverse)."""
-    try:
-        return np.linalg.inv(t)
-    except np.linalg.LinAlgError:
-        out = np.full_like(t, np.nan)
-        for i, m in enumerate(t):
-            try:
-                out[i] = np.linalg.inv(m)
-            except np.linalg.LinAlgError:
-                pass
-        return out
-
-
 class Delaunay:
     """Delaunay(points, furthest_site=False, incremental=False, qhull_options=None, *,
     weights=None, order="brio", locate="walk", seed=0, storage="array", count=False,
@@ -169,11 +153,12 @@ class Delaunay:
                  storage: str = "array", count: bool = False,
                  progress: Optional[Callable[[int, int], Any]] = None) -> None:
         _refuse_unsupported(points, furthest_site, qhull_options)
-        self._options = dict(order=order, locate=locate, seed=seed, storage=storage, count=count)
+        self._options: dict[str, Any] = dict(order=order, locate=locate, seed=seed,
+                                             storage=storage, count=count)
         self._engine = _cavity.Triangulation(points, weights, order, locate, seed, storage, count,
                                              incremental, progress)
         self._batches = [len(self._engine.points)]
-        self._derived: dict = {}
+        self._derived: dict[str, Any] = {}
 
     # Arrays of the engine ----------------------------------------------------------------------
 
@@ -261,15 +246,7 @@ class Delaunay:
 
     @property
     def transform(self) -> np.ndarray:
-        def make() -> np.ndarray:
-            p, s = self.points, self.simplices
-            last = p[s[:, 3]]
-            t = np.stack([p[s[:, 0]] - last, p[s[:, 1]] - last, p[s[:, 2]] - last], axis=2)
-            out = np.empty((len(s), 4, 3))
-            out[:, :3, :] = _inverse_or_nan(t)
-            out[:, 3, :] = last
-            return out
-        return self._cached("transform", make)
+        return self._cached("transform", self._engine.transform)
 
     @property
     def paraboloid_scale(self) -> float:
@@ -292,18 +269,7 @@ class Delaunay:
 
     @property
     def equations(self) -> np.ndarray:
-        def make() -> np.ndarray:
-            lifted = self.lift_points(self.points)[self.simplices]  # (m, 4, 4)
-            edges = lifted[:, 1:, :] - lifted[:, :1, :]  # (m, 3, 4)
-            normal = np.empty((len(lifted), 4))
-            for k in range(4):  # the 4-D cross product of the three edges, by cofactors
-                minor = np.delete(edges, k, axis=2)
-                normal[:, k] = (-1) ** k * np.linalg.det(minor)
-            normal /= np.linalg.norm(normal, axis=1)[:, None]
-            normal[normal[:, 3] > 0] *= -1  # outward from the lower hull: downwards
-            offset = -np.einsum("ij,ij->i", normal, lifted[:, 0, :])
-            return np.column_stack([normal, offset])
-        return self._cached("equations", make)
+        return self._cached("equations", lambda: self._engine.equations(*self._lifting()))
 
     # Methods ----------------------------------------------------------------------------------
 
@@ -372,7 +338,7 @@ class Delaunay:
     def to_meshio(self) -> Any:
         """The tetrahedra as a ``meshio.Mesh`` (cells "tetra", positive volume)."""
         try:
-            import meshio
+            import meshio  # type: ignore[import]
         except ImportError as e:
             raise ImportError("to_meshio needs meshio (pip install meshio; Debian: "
                               "python3-meshio)") from e
@@ -391,7 +357,7 @@ class Delaunay:
     def to_pyvista(self) -> Any:
         """The tetrahedra as a ``pyvista.UnstructuredGrid``."""
         try:
-            import pyvista
+            import pyvista  # type: ignore[import]
         except ImportError as e:
             raise ImportError("to_pyvista needs pyvista (pip install pyvista); vtk_cells() "
                               "gives the arrays without it") from e

@@ -14,6 +14,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include "adopt.h"
 #include "bindings.h"
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/cdt_regions.h"
@@ -27,19 +28,6 @@ namespace {
 
 using core::Point3;
 using predicates::Sign;
-
-/// A read-only int32 numpy array that takes ownership of `values` without copying them. T is
-/// std::int32_t, std::uint32_t (ids < 2^31, so the bits are the same) or an array of them.
-template <class T>
-py::array_t<std::int32_t> adopt(std::vector<T>&& values, const std::vector<py::ssize_t>& shape) {
-    static_assert(sizeof(T) % sizeof(std::int32_t) == 0);
-    auto* heap = new std::vector<T>(std::move(values));
-    py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<T>*>(p); });
-    py::array_t<std::int32_t> array(
-        shape, reinterpret_cast<const std::int32_t*>(heap->data()), owner);
-    array.attr("setflags")(py::arg("write") = false);
-    return array;
-}
 
 std::string repr_text(const py::handle& h) {
     return py::repr(h).cast<std::string>();

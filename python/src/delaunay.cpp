@@ -19,6 +19,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "adopt.h"
 #include "bindings.h"
 #include "cavity/core/check/validate.h"
 #include "cavity/core/io/mesh_io.h"
@@ -27,6 +28,7 @@
 #include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "input_arrays.h"
+#include "simplex_geometry.h"
 #include "stats_dict.h"
 
 namespace cavity::python {
@@ -53,19 +55,6 @@ struct Stopwatch {
     }
 };
 
-/// A read-only int32 numpy array that takes ownership of `values` without copying them. T is
-/// std::int32_t, std::uint32_t (ids < 2^31, so the bits are the same) or an array of them.
-template <class T>
-py::array_t<std::int32_t> adopt(std::vector<T>&& values, const std::vector<py::ssize_t>& shape) {
-    static_assert(sizeof(T) % sizeof(std::int32_t) == 0);
-    auto* heap = new std::vector<T>(std::move(values));
-    py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<T>*>(p); });
-    py::array_t<std::int32_t> array(
-        shape, reinterpret_cast<const std::int32_t*>(heap->data()), owner);
-    array.attr("setflags")(py::arg("write") = false);
-    return array;
-}
-
 /// Everything one construction produces, computed without the GIL.
 struct Built {
     std::optional<core::DelaunayTriangulation> live;  ///< kept for incremental insertion
@@ -76,12 +65,15 @@ struct Built {
     std::pair<double, double> adjacency_s;
 };
 
-/// The scalar results of the live triangulation, as triangulate() returns them.
-void read_live(const core::DelaunayTriangulation& dt, core::Triangulation& t) {
+/// The scalar results of the live triangulation, as triangulate() returns them, beside its
+/// adjacency (which holds the hull).
+void read_live(const core::DelaunayTriangulation& dt,
+               const core::Adjacency& adjacency,
+               core::Triangulation& t) {
     t.duplicates = dt.duplicates();
     t.redundant = dt.redundant();
     t.counters = dt.counters();
-    t.hull_triangles = dt.hull_triangle_count();
+    t.hull_triangles = adjacency.hull.size();
     t.storage_bytes = dt.storage().bytes();
 }
 
@@ -100,7 +92,7 @@ Built build(const core::PointSet& input,
         b.triangulate_s = clock.elapsed();
         clock = Stopwatch();
         b.adjacency = dt.adjacency();
-        read_live(dt, b.triangulation);
+        read_live(dt, b.adjacency, b.triangulation);
         if (incremental) {
             b.live.emplace(std::move(dt));
         }
@@ -134,9 +126,8 @@ public:
                   bool incremental,
                   const py::object& progress)
         : input_(to_point_set(points, weights)) {
-        core::OrderOptions order_options;
-        order_options.kind = core::parse_order_kind(order);
-        order_options.seed = seed;
+        order_options_.kind = core::parse_order_kind(order);
+        order_options_.seed = seed;
         core::TriangulateOptions options;
         options.locate = core::parse_locate_kind(locate);
         options.storage = core::parse_storage_kind(storage);
@@ -163,7 +154,7 @@ public:
         Built b;
         {
             py::gil_scoped_release nogil;
-            b = build(input_, order_options, options, incremental);
+            b = build(input_, order_options_, options, incremental);
         }
         live_ = std::move(b.live);
         // The plain engine counts nothing: no zeros that would read as measurements.
@@ -184,9 +175,9 @@ public:
         publish(std::move(b.adjacency), std::move(b.triangulation));
     }
 
-    /// Inserts the rows of `points` (and `weights`) into the live triangulation, in row order, so
-    /// that their perturbation keys are their rows in the concatenated input and the result is
-    /// the triangulation of all points so far, whatever the batches.
+    /// Inserts the rows of `points` (and `weights`) into the live triangulation along the
+    /// construction's insertion order; their perturbation keys are their rows in the concatenated
+    /// input, so the result is the triangulation of all points so far, whatever the batches.
     void add_points(const py::handle& points, const py::handle& weights) {
         if (!live_) {
             throw py::value_error(
@@ -207,11 +198,11 @@ public:
         core::Triangulation t;
         {
             py::gil_scoped_release nogil;
-            for (std::size_t i = 0; i < batch.size(); ++i) {
-                live_->insert(batch.points[i], batch.weighted() ? batch.weights[i] : 0.0);
-            }
+            const core::InsertionOrder order =
+                core::make_insertion_order(batch.points, order_options_);
+            live_->insert(batch, order.sequence);
             adjacency = live_->adjacency();
-            read_live(*live_, t);
+            read_live(*live_, adjacency, t);
         }
         input_.points.insert(input_.points.end(), batch.points.begin(), batch.points.end());
         input_.weights.insert(input_.weights.end(), batch.weights.begin(), batch.weights.end());
@@ -225,7 +216,9 @@ public:
     bool incremental() const { return live_.has_value(); }
 
     /// For each row of the (k, 3) `xi`, the lowest-numbered simplex whose closure holds it, or
-    /// -1 (outside the hull, or a NaN coordinate). Each walk starts where the last one ended.
+    /// -1 (outside the hull, or a NaN coordinate). The queries are walked to along a Hilbert
+    /// curve, each walk starting where the last one ended, so that the walks stay short whatever
+    /// the order the queries come in (the answers do not depend on it).
     py::array_t<std::int32_t> find_simplex(const py::handle& xi) const {
         const DoubleArray q(py::module_::import("numpy").attr("asarray")(xi, "float64"));
         if (q.ndim() != 2 || q.shape(1) != 3) {
@@ -235,19 +228,48 @@ public:
         std::vector<std::int32_t> found(k, -1);
         {
             py::gil_scoped_release nogil;
-            const core::SimplexLocator locator(input_.points, simplices(), neighbors());
+            std::vector<core::Point3> finite;
+            std::vector<std::size_t> row;
             const double* x = q.data();
-            std::int32_t start = 0;
             for (std::size_t i = 0; i < k; ++i) {
                 const core::Point3 p{x[3 * i], x[3 * i + 1], x[3 * i + 2]};
-                if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-                    continue;
+                if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) {
+                    finite.push_back(p);
+                    row.push_back(i);
                 }
-                found[i] = locator.find(p, start);
-                start = found[i] >= 0 ? found[i] : start;
+            }
+            core::OrderOptions curve;
+            curve.kind = core::OrderKind::kHilbert;
+            const core::InsertionOrder order = core::make_insertion_order(finite, curve);
+            const core::SimplexLocator locator(input_.points, simplices(), neighbors());
+            std::int32_t start = 0;
+            for (std::uint32_t j : order.sequence) {
+                const std::int32_t t = locator.find(finite[j], start);
+                found[row[j]] = t;
+                start = t >= 0 ? t : start;
             }
         }
         return adopt(std::move(found), {static_cast<py::ssize_t>(k)});
+    }
+
+    /// scipy's transform, (m, 4, 3) float64.
+    py::array_t<double> transform() const {
+        std::vector<double> values;
+        {
+            py::gil_scoped_release nogil;
+            values = barycentric_transforms(input_.points, simplices());
+        }
+        return adopt<double>(std::move(values), {simplices_.shape(0), 4, 3});
+    }
+
+    /// scipy's equations for the lifting z = scale |x|^2 + shift, (m, 5) float64.
+    py::array_t<double> equations(double scale, double shift) const {
+        std::vector<double> values;
+        {
+            py::gil_scoped_release nogil;
+            values = lifted_hyperplanes(input_.points, simplices(), scale, shift);
+        }
+        return adopt<double>(std::move(values), {simplices_.shape(0), 5});
     }
 
     /// scipy's (indptr, indices).
@@ -337,6 +359,7 @@ private:
     }
 
     core::PointSet input_;
+    core::OrderOptions order_options_;  ///< also orders the batches of add_points
     std::optional<core::DelaunayTriangulation> live_;
 };
 
@@ -379,6 +402,8 @@ its arrays, and the operations that need the engine.
         .def("close", &Triangulation::close)
         .def("find_simplex", &Triangulation::find_simplex, py::arg("xi"))
         .def("vertex_neighbor_vertices", &Triangulation::vertex_neighbor_vertices)
+        .def("transform", &Triangulation::transform)
+        .def("equations", &Triangulation::equations, py::arg("scale"), py::arg("shift"))
         .def("check", &Triangulation::check);
 }
 

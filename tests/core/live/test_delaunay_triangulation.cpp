@@ -147,6 +147,48 @@ TEST(DelaunayTriangulation, InsertionsEqualTheBatchOfAllPoints) {
     EXPECT_THROW(dt.insert({0.5, std::numeric_limits<double>::quiet_NaN(), 0.5}, 0.0), Error);
 }
 
+/// A batch inserted along a space-filling curve gives what row-by-row insertion gives: the same
+/// tetrahedra, and the same repeats, inside the batch and of earlier points, the lowest equal row
+/// kept whatever the order.
+TEST(DelaunayTriangulation, BatchInsertionEqualsRowByRow) {
+    for (const char* dist : {"cube", "grid"}) {
+        PointSet ps = generate_points(dist, 700, 12);
+        ps.points[650] = ps.points[20];   // repeats a point of the build
+        ps.points[690] = ps.points[680];  // repeats a later row of the batch
+        ps.points[610] = ps.points[695];  // repeated by a later row of the batch
+        DelaunayTriangulation dt = live_in_input_order(head(ps, 300));
+        PointSet batch;
+        batch.points.assign(ps.points.begin() + 300, ps.points.end());
+        const InsertionOrder order = make_insertion_order(batch.points, OrderOptions{});
+        EXPECT_EQ(dt.insert(batch, order.sequence), 300u);
+        EXPECT_EQ(dt.point_count(), ps.size());
+        EXPECT_TRUE(dt.check(CheckLevel::kDelaunay).empty()) << dist;
+        const Triangulation whole = test::triangulate_in_input_order(ps);
+        EXPECT_EQ(canonical(dt.tets()), canonical(whole.tets)) << dist;
+        EXPECT_EQ(dt.duplicates(), whole.duplicates) << dist;
+    }
+    const PointSet weighted = generate_points("cube", 400, 3, parse_weight_spec("uniform:0:0.1"));
+    DelaunayTriangulation dt = live_in_input_order(head(weighted, 100));
+    PointSet batch;
+    batch.points.assign(weighted.points.begin() + 100, weighted.points.end());
+    batch.weights.assign(weighted.weights.begin() + 100, weighted.weights.end());
+    std::vector<std::uint32_t> backwards(batch.size());
+    std::iota(backwards.rbegin(), backwards.rend(), 0u);
+    dt.insert(batch, backwards);
+    const Triangulation whole = test::triangulate_in_input_order(weighted);
+    EXPECT_EQ(canonical(dt.tets()), canonical(whole.tets));
+    EXPECT_EQ(dt.redundant(), whole.redundant);
+    // Refused before anything changes.
+    batch.weights.clear();
+    EXPECT_THROW(dt.insert(batch, backwards), Error);
+    batch.weights.assign(weighted.weights.begin() + 100, weighted.weights.end());
+    batch.points[7].y = std::numeric_limits<double>::infinity();
+    EXPECT_THROW(dt.insert(batch, backwards), Error);
+    backwards.pop_back();
+    EXPECT_THROW(dt.insert(batch, backwards), Error);
+    EXPECT_EQ(dt.point_count(), weighted.size());
+}
+
 TEST(DelaunayTriangulation, LocateFindsAClosedCell) {
     const PointSet ps = generate_points("cube", 500, 4);
     const DelaunayTriangulation dt = live_in_input_order(ps);

@@ -68,6 +68,15 @@ public:
     /// \throws Error for a non-finite coordinate or weight (nothing changes).
     std::uint32_t insert(const Point3& p, double weight = 0.0);
 
+    /// Inserts every point of `batch` (with its weight when weighted), giving row r the input
+    /// index point_count() + r, in the order `sequence` (a permutation of the rows: a
+    /// space-filling curve keeps the walks short). The result is the one of inserting the rows
+    /// one by one in row order: a repeat inside the batch is never inserted and lists the lowest
+    /// equal row's fate as what it repeats. Returns the first new index. \throws Error, before
+    /// anything changes, for a non-finite coordinate or weight (naming the point as its new
+    /// index), a sequence that is not a permutation, or missing weights.
+    std::uint32_t insert(const PointSet& batch, std::span<const std::uint32_t> sequence);
+
     /// A solid tetrahedron whose closure contains p, or a ghost whose hull triangle has p strictly
     /// in front of it (p outside the hull): by the exact visibility walk from the last tetrahedron
     /// created.
@@ -153,6 +162,9 @@ private:
     /// By vertex id: whether it is a vertex of a live tetrahedron (one pass over the storage).
     std::vector<bool> vertex_flags() const;
     void restart_after_edit();
+    /// Inserts p as input index `key` (already handed out); returns `key`, or the index of the
+    /// vertex it repeats.
+    std::uint32_t insert_keyed(const Point3& p, double weight, std::uint32_t key);
 
     std::unique_ptr<State> state_;
 };
