@@ -7,6 +7,7 @@ transforms, the lifted hyperplanes) is numpy here, computed on first use and kep
 
 from __future__ import annotations
 
+import warnings
 from typing import Any, Callable, Optional
 
 import numpy as np
@@ -39,11 +40,7 @@ def _refuse_unsupported(points: Any, furthest_site: bool, qhull_options: Optiona
 
 
 class Delaunay:
-    """Delaunay(points, furthest_site=False, incremental=False, qhull_options=None, *,
-    weights=None, order="brio", locate="walk", seed=0, storage="array", count=False,
-    progress=None)
-
-    Exact Delaunay tetrahedralization of points in 3-D, or the regular (weighted Delaunay)
+    """Exact Delaunay tetrahedralization of points in 3-D, or the regular (weighted Delaunay)
     triangulation of weighted points.
 
     A drop-in replacement for ``scipy.spatial.Delaunay`` on 3-D input, with the same attributes
@@ -66,8 +63,9 @@ class Delaunay:
         Weights: the result is the regular triangulation (power diagram dual). Keyword only.
     order : {"brio", "hilbert", "zorder", "random", "input"}, optional
         Insertion order (Cheng, Dey & Shewchuk section 5.3). Default "brio".
-    locate : {"walk", "conflict-graph", "conflict-graph-all"}, optional
-        Point location: the walk (section 5.5) or the conflict graph (section 5.4).
+    locate : {"walk", "straight-walk", "conflict-graph", "conflict-graph-all"}, optional
+        Point location: a walk (section 5.5) or the conflict graph (section 5.4; "-all" keeps
+        every conflict, so that ``count=True`` measures Theorem 5.4's conflicts created).
     seed : int, optional
         Seed of the order's and the walk's random choices. Results are reproducible.
     storage : {"array", "hash"}, optional
@@ -107,6 +105,8 @@ class Delaunay:
         The neighbours of vertex k are ``indices[indptr[k]:indptr[k+1]]``, increasing.
     furthest_site : bool
         False.
+    good : ndarray of int32, shape (nsimplex,)
+        Ones: scipy's marks of Qhull's option QG, which cavity does not have.
     min_bound, max_bound : ndarray of double, shape (3,)
         Bounds of the input points.
     npoints, nsimplex, ndim : int
@@ -213,6 +213,19 @@ class Delaunay:
     @property
     def furthest_site(self) -> bool:
         return False
+
+    @property
+    def good(self) -> np.ndarray:
+        """(nsimplex,) int32, scipy's: which simplices Qhull's option QG marks good; without the
+        option, which cavity never runs, all of them (ones)."""
+        return self._cached("good", lambda: np.ones(self.nsimplex, dtype=np.int32))
+
+    @property
+    def vertices(self) -> np.ndarray:
+        """Deprecated alias of ``simplices``, as in scipy."""
+        warnings.warn("Delaunay attribute 'vertices' is deprecated in favour of 'simplices'",
+                      DeprecationWarning, stacklevel=2)
+        return self.simplices
 
     @property
     def min_bound(self) -> np.ndarray:

@@ -192,6 +192,9 @@ def test_bounds_hull_and_vertices_agree_with_scipy(pair):
     assert np.array_equal(ours.max_bound, theirs.max_bound)
     assert sorted_rows(ours.convex_hull) == sorted_rows(theirs.convex_hull)
     assert ours.furthest_site is False and ours.ndim == 3
+    assert ours.good.dtype == theirs.good.dtype and np.array_equal(ours.good, theirs.good)
+    with pytest.warns(DeprecationWarning):
+        assert ours.vertices is ours.simplices
 
 
 def test_coplanar_lists_the_repeats_as_scipy_does():
