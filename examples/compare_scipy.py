@@ -8,8 +8,8 @@
    counts, with cavity's exact predicates, the flat simplices (orient3d == 0) and the facets that
    are not locally Delaunay (the apex across the facet strictly inside the circumsphere).
 
-Run from the repository root after building (the module is in BUILD/python):
-    PYTHONPATH=build/python /usr/bin/python3 examples/compare_scipy.py --n 100000
+Run from the repository root after building (the package is in BUILD/python):
+    PYTHONPATH=build/release/python /usr/bin/python3 examples/compare_scipy.py --n 100000
 """
 
 import argparse

@@ -50,6 +50,7 @@ head -1 dup.ele | grep -q "^3 " || fail "dup: expected 3 tetrahedra, got '$(head
 awk 'NR>1 && !/^#/ {for (i=2;i<=5;i++) if ($i<1 || $i>5) bad=1} END {exit bad}' dup.ele || fail "dup: indices not 1-based"
 grep -q '"duplicates": 1' dup.json || fail "dup: stats lack the duplicate count"
 grep -q '"triangulate_s"' dup.json || fail "dup: stats lack timings"
+grep -q '"engine": "counting"' dup.json || fail "dup: stats do not name the engine"
 "$cavity" check dup.node dup.ele --quiet || fail "check rejects a valid mesh"
 
 # cavity check catches a flipped tetrahedron and a missing one.
@@ -181,6 +182,7 @@ for key in conflicts_created ghost_conflicts_created conflicts_deleted live_conf
   grep -q "\"$key\": [1-9]" conf.json || fail "conflicts: stats lack $key"
 done
 grep -q '"conflicts_counted": true' conf.json || fail "conflicts: not marked as counted"
+grep -q '"engine": "counting+conflict-counter"' conf.json || fail "conflicts: engine not named"
 "$cavity" triangulate conf.node -o conf --count-conflicts --locate conflict-graph --stats conf_cg.json --quiet ||
   fail "conflicts: conflict graph failed"
 [ "$(grep '"conflicts_created"' conf.json)" = "$(grep '"conflicts_created"' conf_cg.json)" ] ||
