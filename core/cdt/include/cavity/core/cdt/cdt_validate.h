@@ -18,18 +18,30 @@ struct CdtValidation {
     bool ok() const { return problem_count == 0; }
 };
 
+/// Which mesh of the PLC is checked: the CDT of the whole convex hull, or the domain carved out of
+/// it (cdt_carve.h).
+enum class CdtDomain { kConvexHull, kCarved };
+
 /// Checks, exactly and independently of how the mesh was built, that `tets` (0-based indices into
 /// plc.points) is a constrained Delaunay tetrahedralization of `plc` under cavity's symbolic
 /// perturbation (keyed on the input index):
 ///  - the tetrahedra form a complex (positive right-hand volume, each triangle on at most two
-///    tetrahedra, on opposite sides) whose boundary is the convex hull, and every point is a
-///    vertex;
-///  - every PLC edge is an edge of the mesh;
+///    tetrahedra, on opposite sides);
+///  - kConvexHull: its boundary is the convex hull, every point is a vertex and every PLC edge an
+///    edge of the mesh;
+///  - kCarved: its boundary consists of polygon triangles, no tetrahedron holds a volume hole
+///    point (in its closure), and every PLC edge whose endpoints are
+///    both mesh vertices is an edge of the mesh (points and segments in the removed exterior or
+///    holes are gone with it). Its tetrahedra are only checked locally, as a subcomplex: two
+///    tetrahedra far apart are not tested for overlap;
 ///  - no tetrahedron crosses a polygon, and each polygon's area equals the area of the mesh
-///    triangles inside it: every polygon is a union of faces;
+///    triangles inside it: every polygon is a union of faces (for kCarved, a polygon reaching
+///    into the removed exterior is therefore refused);
 ///  - every interior triangle not in a polygon is locally Delaunay (the apex across it is not in
-///  the
-///    perturbed circumball), which by the Constrained Delaunay Lemma makes the mesh a CDT.
-CdtValidation validate_cdt(const Plc& plc, std::span<const std::array<std::uint32_t, 4>> tets);
+///    the perturbed circumball), which by the Constrained Delaunay Lemma makes the mesh (the
+///    carved one: a subcomplex of one) a CDT.
+CdtValidation validate_cdt(const Plc& plc,
+                           std::span<const std::array<std::uint32_t, 4>> tets,
+                           CdtDomain domain = CdtDomain::kConvexHull);
 
 }  // namespace cavity::core
