@@ -155,6 +155,29 @@ grep -q "domain (convex hull): [0-9]* tetrahedra kept, 0 removed, volume 0.87" l
   fail "carve: check --poly --convex-hull rejects the hull"
 "$cavity" check lhull.node lhull.ele --poly lprism.poly --quiet 2>/dev/null &&
   fail "carve: check --poly accepts the hull of the L as its domain"
+# --convex-hull writes what `cavity cdt` wrote before carving existed (commit b17c6bf), and the
+# carved .ele lists some of those tetrahedra, as they were.
+cat > lhull_expected.ele <<'ELE'
+0 1 0 7 9
+1 3 10 2 4
+2 9 0 6 11
+3 3 0 9 11
+4 5 0 3 11
+5 3 0 1 9
+6 10 3 9 11
+7 5 3 4 11
+8 7 0 6 9
+9 4 3 10 11
+10 8 1 7 9
+11 3 1 2 9
+12 2 1 8 9
+13 2 10 3 9
+14 8 10 2 9
+ELE
+tail -n +2 lhull.ele | cmp -s - lhull_expected.ele || fail "carve: --convex-hull output changed"
+cut -d' ' -f2- lhull_expected.ele > lhull_tets.txt
+tail -n +2 lprism.ele | cut -d' ' -f2- | grep -qvxFf lhull_tets.txt &&
+  fail "carve: a kept tetrahedron is not one of the hull's"
 kept=$(head -1 lprism.ele | cut -d' ' -f1)
 removed=$(sed -n 's/.* kept, \([0-9]*\) removed.*/\1/p' lprism.txt)
 [ "$((kept + removed))" = "$(head -1 lhull.ele | cut -d' ' -f1)" ] ||

@@ -148,6 +148,12 @@ TEST(CdtCarve, HolePointRemovesTheInnerCube) {
         EXPECT_FALSE(c.x > 1 && c.x < 3 && c.y > 1 && c.y < 3 && c.z > 1 && c.z < 3);
     }
     EXPECT_TRUE(validate_cdt(cdt.plc, domain.tets, CdtDomain::kCarved).ok());
+    // The whole mesh, its boundary all polygons, is refused as the domain: the hole is in it.
+    const CdtValidation uncarved = validate_cdt(cdt.plc, cdt.tets, CdtDomain::kCarved);
+    ASSERT_EQ(uncarved.problem_count, 1u);
+    EXPECT_NE(uncarved.problems[0].find("volume hole point 0 (line 44) lies in tetrahedron"),
+              std::string::npos)
+        << uncarved.problems[0];
     // The hull keeps everything, the hole too.
     EXPECT_EQ(carve_cdt(cdt, true).tets, cdt.tets);
     // Without the hole point the inner cube stays.
