@@ -197,6 +197,16 @@ grep -q "lon.poly:32: volume hole point lies on a polygon" err.txt || fail "carv
 # A hole point in the notch (the exterior) removes nothing more; one in the L removes it all.
 "$cavity" cdt lnotch.poly -o lnotch --protect > lnotch.txt || fail "carve: notch holes failed"
 grep -q "0 tetrahedra kept" lnotch.txt || fail "carve: the L's hole left '$(grep domain lnotch.txt)'"
+# A hole in the box's lower half: the upper half (volume 4 of 8) stays, with the lower half of
+# each side polygon and the bottom gone with the hole, and check --poly accepts it.
+sed '$ s/^0$/1\n1 1 1 0.5/' box.poly > boxhole.poly
+"$cavity" cdt boxhole.poly -o boxhole > boxhole.txt || fail "carve: box with a hole failed"
+volume=$(sed -n 's/.* removed, volume \([0-9.e+-]*\)$/\1/p' boxhole.txt)
+awk -v v="${volume:-nan}" 'BEGIN {exit !(v - 4 <= 4e-15 && 4 - v <= 4e-15)}' ||
+  fail "carve: box with a hole: '$(grep domain boxhole.txt)'"
+"$cavity" check box.node boxhole.ele --poly boxhole.poly --quiet || fail "carve: check rejects the upper half"
+"$cavity" check box.node box.ele --poly boxhole.poly --quiet 2>err.txt && fail "carve: check accepts the hole kept"
+grep -q "volume hole point 1 (line 31) lies in tetrahedron" err.txt || fail "carve: '$(cat err.txt)'"
 
 # VTU output.
 "$cavity" triangulate cube.node -o cube --format vtu --quiet || fail "vtu: failed"

@@ -89,11 +89,12 @@ std::string tet_name(const std::array<std::uint32_t, 4>& t, int base) {
 }
 
 /// The facet's triangles among the mesh triangles lying in its plane, after checking that no
-/// tetrahedron crosses it and that they cover its area.
-std::vector<Triangle> polygon_faces(const Plc& plc,
-                                    std::size_t index,
-                                    const BoxedMesh& mesh,
-                                    Report& report) {
+/// tetrahedron crosses it and, for the whole hull, that they cover its area. A carved domain holds
+/// only the part of a polygon next to its tetrahedra (none of a polygon with removed tetrahedra on
+/// both sides, the lower half of a wall whose upper side was a hole), and a part of the polygon in
+/// the domain but not covered would be crossed by a tetrahedron, which is checked.
+std::vector<Triangle> polygon_faces(
+    const Plc& plc, std::size_t index, const BoxedMesh& mesh, bool carved, Report& report) {
     const PlcFacet& facet = plc.facets[index];
     const std::string name = facet_name(plc, index);
     const auto plane = ExactPlane::of_facet(plc, facet);
@@ -146,7 +147,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
             covered += triangle_area2(*plane, pts[g[0]], pts[g[1]], pts[g[2]]);
         }
     }
-    if (covered != facet_region_area2(plc, facet, *plane)) {
+    if (!carved && covered != facet_region_area2(plc, facet, *plane)) {
         report.add(name + " is not a union of mesh triangles (their area differs from its area)");
     }
     return faces;
@@ -334,7 +335,7 @@ CdtValidation validate_cdt(const Plc& plc,
     }
     std::set<Triangle> constrained;
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
-        for (const Triangle& g : polygon_faces(plc, f, mesh, report)) {
+        for (const Triangle& g : polygon_faces(plc, f, mesh, carved, report)) {
             constrained.insert(g);
         }
     }

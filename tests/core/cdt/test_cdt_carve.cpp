@@ -168,6 +168,8 @@ TEST(CdtCarve, RegionsKeepTheirMarkersOnTheKeptTetrahedra) {
     ASSERT_EQ(domain.regions.size(), domain.tets.size());
     EXPECT_EQ(six_volume(cdt.plc.points.points, domain.tets), 6.0 * 8);
     EXPECT_EQ(domain.regions, std::vector<std::int32_t>(domain.tets.size(), 9));
+    // The outer cube's squares have removed tetrahedra on both sides: no longer in the mesh.
+    EXPECT_TRUE(validate_cdt(cdt.plc, domain.tets, CdtDomain::kCarved).ok());
     const CarvedCdt hull = carve_cdt(cdt, true);
     EXPECT_EQ(hull.tets, cdt.tets);
     EXPECT_EQ(std::count(hull.regions.begin(), hull.regions.end(), 9),
