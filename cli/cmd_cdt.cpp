@@ -133,6 +133,13 @@ void run_cdt(const CdtArgs& args) {
     if (args.quiet) {
         return;
     }
+    if (domain.tets.empty() && !cdt.tets.empty()) {
+        // Most likely polygons that do not close a surface, not an intended empty mesh.
+        std::fprintf(stderr,
+                     "cavity: warning: %s: the polygons enclose no volume, so every tetrahedron "
+                     "was removed as exterior or hole (--convex-hull keeps the hull)\n",
+                     args.input.c_str());
+    }
     const auto base = static_cast<std::uint32_t>(cdt.plc.points.index_base);
     for (std::uint32_t v : cdt.protection.inserted) {
         const auto& p = cdt.plc.points.points[v];

@@ -195,8 +195,9 @@ ls lout.* 2>/dev/null | grep -qv 'lout.poly' && fail "carve: hole outside wrote 
 "$cavity" cdt lon.poly -o lon --protect 2>err.txt && fail "carve: hole on a polygon accepted"
 grep -q "lon.poly:32: volume hole point lies on a polygon" err.txt || fail "carve: '$(cat err.txt)'"
 # A hole point in the notch (the exterior) removes nothing more; one in the L removes it all.
-"$cavity" cdt lnotch.poly -o lnotch --protect > lnotch.txt || fail "carve: notch holes failed"
+"$cavity" cdt lnotch.poly -o lnotch --protect > lnotch.txt 2>err.txt || fail "carve: notch holes failed"
 grep -q "0 tetrahedra kept" lnotch.txt || fail "carve: the L's hole left '$(grep domain lnotch.txt)'"
+grep -q "lnotch.poly: the polygons enclose no volume" err.txt || fail "carve: no warning: '$(cat err.txt)'"
 # A hole in the box's lower half: the upper half (volume 4 of 8) stays, with the lower half of
 # each side polygon and the bottom gone with the hole, and check --poly accepts it.
 sed '$ s/^0$/1\n1 1 1 0.5/' box.poly > boxhole.poly
