@@ -16,14 +16,13 @@ namespace {
     throw Error(located_message(plc.source, line, "volume hole point " + why));
 }
 
-}  // namespace
-
-CarvedCdt carve_cdt(const Cdt& cdt, bool convex_hull) {
+/// Which tetrahedra the holes and (unless convex_hull) the exterior remove; the hole points are
+/// checked either way.
+std::vector<bool> removed_tets(const Cdt& cdt, bool convex_hull) {
     const auto& pts = cdt.plc.points.points;
     std::vector<bool> removed(cdt.tets.size(), false);
     TetFlood flood(cdt.tets, cdt.faces);
     const auto remove = [&](std::uint32_t t) { removed[t] = true; };
-    // Hole points are located (and refused outside or on a polygon) even when the hull stays.
     for (const PlcVolumeHole& hole : cdt.plc.volume_holes) {
         const std::optional<std::uint32_t> seed = flood.locate(pts, hole.point);
         if (!seed) {
@@ -41,6 +40,16 @@ CarvedCdt carve_cdt(const Cdt& cdt, bool convex_hull) {
             flood.fill(seed, remove);
         }
     }
+    return removed;
+}
+
+}  // namespace
+
+CarvedCdt carve_cdt(const Cdt& cdt, bool convex_hull) {
+    // The whole hull without hole points to check needs no flood (nor its O(T) hash table).
+    const std::vector<bool> removed = convex_hull && cdt.plc.volume_holes.empty()
+                                          ? std::vector<bool>(cdt.tets.size(), false)
+                                          : removed_tets(cdt, convex_hull);
     const std::vector<std::int32_t> markers = region_markers(cdt.plc, cdt.tets, cdt.faces);
     CarvedCdt out;
     for (std::size_t t = 0; t < cdt.tets.size(); ++t) {
