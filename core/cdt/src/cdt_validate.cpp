@@ -10,6 +10,7 @@
 #include "cavity/perturbation/sos.h"
 #include "cavity/predicates/orient3d.h"
 #include "exact_plane.h"
+#include "points_in_tets.h"
 
 namespace cavity::core {
 
@@ -190,28 +191,38 @@ std::uint32_t apex(const std::array<std::uint32_t, 4>& t, const Triangle& g) {
 }
 
 /// A carved domain keeps no tetrahedron whose closure holds a volume hole point (carve_cdt refuses
-/// hole points on polygons, and the domain's boundary is polygons).
-void check_holes_carved(const Plc& plc,
-                        std::span<const std::array<std::uint32_t, 4>> tets,
-                        Report& report) {
-    const auto& pts = plc.points.points;
-    for (std::size_t h = 0; h < plc.volume_holes.size(); ++h) {
-        const Point3& p = plc.volume_holes[h].point;
-        for (const auto& t : tets) {
-            bool inside = true;
-            for (std::size_t i = 0; i < 4 && inside; ++i) {
-                std::array<Point3, 4> q{pts[t[0]], pts[t[1]], pts[t[2]], pts[t[3]]};
-                q[i] = p;
-                inside = predicates::orient3d(q[0], q[1], q[2], q[3]) != Sign::kPos;
-            }
-            if (inside) {
-                const std::size_t line = plc.volume_holes[h].line;
-                report.add("volume hole point " +
-                           std::to_string(h + static_cast<std::size_t>(plc.points.index_base)) +
-                           (line > 0 ? " (line " + std::to_string(line) + ")" : std::string()) +
-                           " lies in " + tet_name(t, plc.points.index_base));
-                break;
-            }
+/// hole points on polygons, and the domain's boundary is polygons), nor a PLC point that is not
+/// one of its vertices (it would be a polygon corner or segment end hidden inside the domain).
+void check_points_outside(const Plc& plc,
+                          std::span<const std::array<std::uint32_t, 4>> tets,
+                          const std::vector<bool>& used,
+                          Report& report) {
+    std::vector<Point3> probes;
+    std::vector<std::uint32_t> unused;
+    for (const PlcVolumeHole& hole : plc.volume_holes) {
+        probes.push_back(hole.point);
+    }
+    for (std::uint32_t v = 0; v < used.size(); ++v) {
+        if (!used[v]) {
+            probes.push_back(plc.points.points[v]);
+            unused.push_back(v);
+        }
+    }
+    const auto in = points_in_tets(plc.points.points, tets, probes);
+    const std::size_t holes = plc.volume_holes.size();
+    const auto base = static_cast<std::size_t>(plc.points.index_base);
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        if (!in[i]) {
+            continue;
+        }
+        const std::string where = " lies in " + tet_name(tets[*in[i]], plc.points.index_base);
+        if (i < holes) {
+            const std::size_t line = plc.volume_holes[i].line;
+            report.add("volume hole point " + std::to_string(i + base) +
+                       (line > 0 ? " (line " + std::to_string(line) + ")" : std::string()) + where);
+        } else {
+            report.add("point " + std::to_string(unused[i - holes] + base) +
+                       " is not a vertex of the carved mesh but" + where);
         }
     }
 }
@@ -296,17 +307,17 @@ CdtValidation validate_cdt(const Plc& plc,
     }
     const TriangleSides sides = triangle_sides(tets);
     const bool carved = domain == CdtDomain::kCarved;
-    if (carved) {
-        check_carved_complex(plc, tets, sides, report);
-        check_holes_carved(plc, tets, report);
-    } else {
-        check_hull_complex(plc, tets, report);
-    }
     std::vector<bool> used(plc.points.size(), false);
     for (const auto& t : tets) {
         for (std::uint32_t v : t) {
             used[v] = true;
         }
+    }
+    if (carved) {
+        check_carved_complex(plc, tets, sides, report);
+        check_points_outside(plc, tets, used, report);
+    } else {
+        check_hull_complex(plc, tets, report);
     }
     for (std::size_t v = 0; v < used.size(); ++v) {
         if (!carved && !used[v]) {

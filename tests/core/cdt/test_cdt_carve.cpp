@@ -128,6 +128,22 @@ TEST(CdtCarve, LShapedPrismKeepsThreeQuartersOfItsHull) {
     EXPECT_FALSE(validate_cdt(cdt.plc, fewer, CdtDomain::kCarved).ok());
 }
 
+TEST(CdtCarve, CarvedValidationRefusesAPlcPointHiddenInTheDomain) {
+    const Cdt cdt = build_cdt(l_prism(), CdtOptions{true});
+    const CarvedCdt domain = carve_cdt(cdt, false);
+    // The same mesh against the PLC with one more point: in the notch (removed exterior) it may
+    // be missing; inside the L it would have had to be a vertex.
+    Plc plc = cdt.plc;
+    plc.points.points.push_back({0.75, 0.75, 0.5});
+    EXPECT_TRUE(validate_cdt(plc, domain.tets, CdtDomain::kCarved).ok());
+    plc.points.points.back() = {0.25, 0.25, 0.5};
+    const CdtValidation hidden = validate_cdt(plc, domain.tets, CdtDomain::kCarved);
+    ASSERT_EQ(hidden.problem_count, 1u);
+    EXPECT_NE(hidden.problems[0].find("point 12 is not a vertex of the carved mesh but lies in"),
+              std::string::npos)
+        << hidden.problems[0];
+}
+
 TEST(CdtCarve, ConvexHullKeepsEveryTetrahedron) {
     const Cdt cdt = build_cdt(l_prism(), CdtOptions{true});
     const CarvedCdt hull = carve_cdt(cdt, true);

@@ -29,16 +29,17 @@ enum class CdtDomain { kConvexHull, kCarved };
 ///    tetrahedra, on opposite sides);
 ///  - kConvexHull: its boundary is the convex hull, every point is a vertex and every PLC edge an
 ///    edge of the mesh;
-///  - kCarved: its boundary consists of polygon triangles, no tetrahedron holds a volume hole
-///    point (in its closure), and every PLC edge whose endpoints are both mesh vertices is an edge
-///    of the mesh (points and segments in the removed exterior or holes are gone with it). Its
-///    tetrahedra are only checked locally, as a subcomplex: two tetrahedra far apart are not
-///    tested for overlap;
+///  - kCarved: its boundary consists of polygon triangles, no tetrahedron holds (in its closure)
+///    a volume hole point or a PLC point that is not a mesh vertex, and every PLC edge whose
+///    endpoints are both mesh vertices is an edge of the mesh (points and segments in the removed
+///    exterior or holes are gone with it). Its tetrahedra are only checked locally, as a
+///    subcomplex: two tetrahedra far apart are not tested for overlap;
 ///  - no tetrahedron crosses a polygon; for kConvexHull each polygon's area equals the area of the
 ///    mesh triangles inside it: every polygon is a union of faces. A carved domain holds only the
 ///    parts of polygons next to its tetrahedra (none of a wall with holes on both sides), so there
-///    the polygons are not measured: a part in the domain but not covered would have to be crossed
-///    by a tetrahedron (reported) or hold a PLC point or edge inside one (not detected);
+///    the polygons are not measured: in a valid PLC (edges meet polygons only at their sides and
+///    corners), a part inside the domain but not covered is crossed by a tetrahedron or has a
+///    corner inside one, both reported;
 ///  - every interior triangle not in a polygon is locally Delaunay (the apex across it is not in
 ///    the perturbed circumball), which by the Constrained Delaunay Lemma makes the mesh (the
 ///    carved one: a subcomplex of one) a CDT.
