@@ -1,10 +1,11 @@
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <string>
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/cdt.h"
-#include "cavity/core/cdt/cdt_regions.h"
+#include "cavity/core/cdt/cdt_carve.h"
 #include "cavity/core/cdt/cdt_vertex_insertion.h"
 #include "cavity/core/cdt/read_poly.h"
 #include "cavity/core/input/plc.h"
@@ -23,6 +24,7 @@ struct CdtArgs {
     std::string prefix;
     std::string insert;
     bool protect = false;
+    bool convex_hull = false;
     bool all_or_nothing = false;
     bool quiet = false;
 };
@@ -93,6 +95,22 @@ void print_insertions(const core::Cdt& cdt, const CdtArgs& args) {
         static_cast<unsigned long long>(c.walk_steps));
 }
 
+/// The domain's volume in doubles: each tetrahedron's, summed in order (not exact; the
+/// tetrahedra are).
+double volume(const std::vector<core::Point3>& pts, const std::vector<core::Tet>& tets) {
+    double sum = 0;
+    for (const core::Tet& t : tets) {
+        const core::Point3& a = pts[t[0]];
+        const core::Point3 u{pts[t[1]].x - a.x, pts[t[1]].y - a.y, pts[t[1]].z - a.z};
+        const core::Point3 v{pts[t[2]].x - a.x, pts[t[2]].y - a.y, pts[t[2]].z - a.z};
+        const core::Point3 w{pts[t[3]].x - a.x, pts[t[3]].y - a.y, pts[t[3]].z - a.z};
+        sum += (u.x * (v.y * w.z - v.z * w.y) - u.y * (v.x * w.z - v.z * w.x) +
+                u.z * (v.x * w.y - v.y * w.x)) /
+               6;
+    }
+    return sum;
+}
+
 void run_cdt(const CdtArgs& args) {
     core::Plc plc = core::read_poly(args.input);
     core::LiveCdt live(std::move(plc), core::CdtOptions{args.protect});
@@ -100,20 +118,27 @@ void run_cdt(const CdtArgs& args) {
         insert_points(live, args);
     }
     const core::Cdt cdt = live.snapshot();
+    const core::CarvedCdt domain = core::carve_cdt(cdt, args.convex_hull);
     core::AtomicFileGroup group;
-    core::write_tetgen(group, args.prefix, cdt.plc.points, cdt.tets);
+    core::write_tetgen(group, args.prefix, cdt.plc.points, domain.tets);
     write_faces(group.add(args.prefix + ".face"), cdt);
     // TetGen's region attributes become the cell data `region` (0: no region).
-    const std::vector<std::int32_t> regions = core::region_markers(cdt.plc, cdt.tets, cdt.faces);
     core::VtuOptions vtu;
     if (!cdt.plc.regions.empty()) {
-        vtu.regions = regions;
+        vtu.regions = domain.regions;
     }
-    core::write_vtu(group, args.prefix, cdt.plc.points, cdt.tets, vtu);
+    core::write_vtu(group, args.prefix, cdt.plc.points, domain.tets, vtu);
     core::write_poly(group.add(args.prefix + ".poly"), cdt.plc);
     group.commit();
     if (args.quiet) {
         return;
+    }
+    if (domain.tets.empty() && !cdt.tets.empty()) {
+        // Most likely polygons that do not close a surface, not an intended empty mesh.
+        std::fprintf(stderr,
+                     "cavity: warning: %s: the polygons enclose no volume, so every tetrahedron "
+                     "was removed as exterior or hole (--convex-hull keeps the hull)\n",
+                     args.input.c_str());
     }
     const auto base = static_cast<std::uint32_t>(cdt.plc.points.index_base);
     for (std::uint32_t v : cdt.protection.inserted) {
@@ -129,6 +154,22 @@ void run_cdt(const CdtArgs& args) {
         cdt.plc.facets.size(),
         cdt.tets.size(),
         cdt.faces.size());
+    std::printf("domain (%s): %zu tetrahedra kept, %zu removed, volume %.17g",
+                args.convex_hull ? "convex hull" : "exterior and holes removed",
+                domain.tets.size(),
+                domain.removed,
+                volume(cdt.plc.points.points, domain.tets));
+    if (!cdt.plc.regions.empty()) {
+        std::map<std::int32_t, std::size_t> count;
+        for (std::int32_t r : domain.regions) {
+            ++count[r];
+        }
+        std::printf("; region markers");
+        for (const auto& [marker, n] : count) {
+            std::printf(" %d: %zu", marker, n);
+        }
+    }
+    std::printf("\n");
     std::printf(
         "flips 2-3 %llu, 3-2 %llu, 4-4 %llu; events queued %llu, stale %llu, held back %llu; "
         "region tetrahedra %llu, largest region %llu vertices; found by rotary searches over "
@@ -159,7 +200,10 @@ void add_cdt_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "cdt",
         "Constrained Delaunay tetrahedralization of a TetGen .poly PLC: Delaunay triangulation of "
-        "its vertices, then flip-based polygon insertion (§5.8); the PLC must be edge-protected");
+        "its vertices, then flip-based polygon insertion (§5.8); the PLC must be edge-protected. "
+        "As TetGen's -p, the domain the polygons bound is kept: the tetrahedra reachable from the "
+        "convex hull without crossing a polygon are removed, and so are those reachable from each "
+        "volume hole point of the .poly");
     cmd->add_option("input", args->input, "the PLC (.poly)")->required();
     cmd->add_option("-o,--output",
                     args->prefix,
@@ -172,6 +216,10 @@ void add_cdt_command(CLI::App& app) {
         "split PLC edges that are not Delaunay until it is edge-protected, at points lying "
         "exactly on them (double coordinates, near the middle; an edge with no such point "
         "is refused by name)");
+    cmd->add_flag("--convex-hull",
+                  args->convex_hull,
+                  "keep the whole convex hull of the points: neither the exterior nor the volume "
+                  "holes are removed (hole points are still checked)");
     cmd->add_option("--insert",
                     args->insert,
                     "after the polygons, insert these points (.node, .xyz, .ply) in file order "

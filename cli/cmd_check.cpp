@@ -28,10 +28,12 @@ struct CheckArgs {
     std::string poly;
     std::vector<std::uint64_t> deleted;
     bool weighted = false;
+    bool convex_hull = false;
     bool quiet = false;
 };
 
-/// --poly: the mesh must be the constrained Delaunay tetrahedralization of the PLC.
+/// --poly: the mesh must be the constrained Delaunay tetrahedralization of the PLC: of the domain
+/// it bounds (as `cavity cdt` carves it), or with --convex-hull of the whole hull.
 void run_cdt_check(const CheckArgs& args) {
     const core::Plc plc = core::read_poly(args.poly);
     // The PLC carries the points; the point file must list the same ones, so that a mesh is
@@ -54,7 +56,8 @@ void run_cdt_check(const CheckArgs& args) {
     core::check_points_fingerprint(args.mesh, args.points, points);
     const auto tets = core::read_ele(args.mesh, plc.points.index_base);
     core::refuse_inverted_mesh(args.mesh, plc.points, tets);
-    const core::CdtValidation report = core::validate_cdt(plc, tets);
+    const core::CdtValidation report = core::validate_cdt(
+        plc, tets, args.convex_hull ? core::CdtDomain::kConvexHull : core::CdtDomain::kCarved);
     if (!report.ok()) {
         std::string message = args.mesh + ": not the constrained Delaunay tetrahedralization of " +
                               args.poly + " (" + std::to_string(report.problem_count) +
@@ -62,11 +65,17 @@ void run_cdt_check(const CheckArgs& args) {
         for (const auto& p : report.problems) {
             message += "\n  " + p;
         }
+        if (!args.convex_hull) {
+            message +=
+                "\n(checked as the domain the PLC bounds; a mesh of the whole convex hull, "
+                "from `cavity cdt --convex-hull`, is checked with --convex-hull)";
+        }
         throw core::Error(message);
     }
     if (!args.quiet) {
-        std::printf("valid: constrained Delaunay tetrahedralization of %s (%zu tetrahedra)\n",
+        std::printf("valid: constrained Delaunay tetrahedralization of %s (%s, %zu tetrahedra)\n",
                     args.poly.c_str(),
+                    args.convex_hull ? "its convex hull" : "the domain it bounds",
                     tets.size());
     }
 }
@@ -134,8 +143,13 @@ void add_check_command(CLI::App& app) {
     cmd->add_flag("--weighted", args->weighted, "weighted Delaunay (weights from the point file)");
     cmd->add_option("--poly",
                     args->poly,
-                    "check a constrained Delaunay tetrahedralization of this PLC (TetGen .poly); "
-                    "the point file must list the same points as the PLC");
+                    "check a constrained Delaunay tetrahedralization of this PLC (TetGen .poly) "
+                    "carved to the domain it bounds, as `cavity cdt` writes it (its boundary must "
+                    "be polygon triangles); the point file must list the same points as the PLC");
+    cmd->add_flag(
+        "--convex-hull",
+        args->convex_hull,
+        "with --poly: the mesh covers the whole convex hull (`cavity cdt --convex-hull`)");
     cmd->add_option("--deleted",
                     args->deleted,
                     "points removed by `cavity triangulate --delete` (the same comma-separated "

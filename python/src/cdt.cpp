@@ -17,6 +17,7 @@
 #include "adopt.h"
 #include "bindings.h"
 #include "cavity/core/base/error.h"
+#include "cavity/core/cdt/cdt_carve.h"
 #include "cavity/core/cdt/cdt_regions.h"
 #include "cavity/core/input/plc.h"
 #include "cavity/predicates/orient3d.h"
@@ -294,6 +295,20 @@ std::vector<core::PlcRegion> regions_of(const py::handle& regions) {
     return result;
 }
 
+/// TetGen's volume hole list: rows [x, y, z].
+std::vector<core::PlcVolumeHole> holes_of(const py::handle& holes) {
+    if (py::len(holes) == 0) {
+        return {};
+    }
+    const DoubleArray a = require_rows(holes, "holes", 3);
+    std::vector<core::PlcVolumeHole> result(static_cast<std::size_t>(a.shape(0)));
+    for (std::size_t h = 0; h < result.size(); ++h) {
+        const double* row = a.data() + 3 * h;
+        result[h] = {{row[0], row[1], row[2]}, 0};
+    }
+    return result;
+}
+
 /// Collinearity, exactly: a, b, c are collinear when their projections on the three coordinate
 /// planes are. Each 2D orientation is orient3d of the projections (z = 0) and the apex (0, 0, 1):
 /// the determinant is minus orient2d's, so the zero test is exact as orient3d is.
@@ -368,13 +383,31 @@ std::size_t region_outside(const core::Cdt& cdt) {
     return cdt.plc.regions.size();
 }
 
+/// The row of the first hole point core refuses, and core's message for it (which has no line to
+/// name); holes.size() when each is accepted on its own.
+std::pair<std::size_t, std::string> hole_refused(const core::Cdt& cdt) {
+    core::Cdt probe;
+    probe.plc.points = cdt.plc.points;
+    probe.tets = cdt.tets;
+    probe.faces = cdt.faces;
+    for (std::size_t h = 0; h < cdt.plc.volume_holes.size(); ++h) {
+        probe.plc.volume_holes = {cdt.plc.volume_holes[h]};
+        try {
+            core::carve_cdt(probe, true);
+        } catch (const core::Error& e) {
+            return {h, e.what()};
+        }
+    }
+    return {cdt.plc.volume_holes.size(), {}};
+}
+
 /// Everything one CDT produces, computed without the GIL.
 struct Built {
     core::Cdt cdt;
-    std::vector<std::int32_t> regions;
+    core::CarvedCdt domain;
 };
 
-Built build(core::Plc plc, const core::CdtOptions& options, bool with_regions) {
+Built build(core::Plc plc, const core::CdtOptions& options, bool convex_hull) {
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
         check_facet_geometry(plc, f);
     }
@@ -391,31 +424,34 @@ Built build(core::Plc plc, const core::CdtOptions& options, bool with_regions) {
         }
         throw core::Error(message, e.kind());
     }
-    if (with_regions) {
-        try {
-            b.regions = core::region_markers(b.cdt.plc, b.cdt.tets, b.cdt.faces);
-        } catch (const core::Error&) {
-            const std::size_t row = region_outside(b.cdt);
-            if (row == b.cdt.plc.regions.size()) {
-                throw;  // not a point outside: core's message as it is
-            }
-            throw core::Error("regions row " + std::to_string(row) +
-                              ": the point lies outside the tetrahedralization (the convex hull "
-                              "of the points)");
+    try {
+        b.domain = core::carve_cdt(b.cdt, convex_hull);
+    } catch (const core::Error&) {
+        // Core names .poly lines, and these rows have none: find the row it refused.
+        const auto [hole, why] = hole_refused(b.cdt);
+        if (hole < b.cdt.plc.volume_holes.size()) {
+            throw core::Error("holes row " + std::to_string(hole) + ": " + why);
         }
+        const std::size_t row = region_outside(b.cdt);
+        if (row == b.cdt.plc.regions.size()) {
+            throw;  // neither: core's message as it is
+        }
+        throw core::Error("regions row " + std::to_string(row) +
+                          ": the point lies outside the tetrahedralization (the convex hull "
+                          "of the points)");
     }
     return b;
 }
 
 class Cdt {
 public:
-    Cdt(core::Plc plc, const core::CdtOptions& options, bool with_regions) {
+    Cdt(core::Plc plc, const core::CdtOptions& options, bool with_regions, bool convex_hull) {
         const std::size_t polygons = plc.facets.size();
         const std::size_t input_points = plc.points.size();
         Built b;
         {
             py::gil_scoped_release nogil;
-            b = build(std::move(plc), options, with_regions);
+            b = build(std::move(plc), options, convex_hull);
         }
         core::Cdt& cdt = b.cdt;
         const auto n = static_cast<py::ssize_t>(cdt.plc.points.size());
@@ -436,7 +472,8 @@ public:
         stats["protection_points"] = cdt.protection.inserted.size();
         stats["protection_rounds"] = cdt.protection.rounds;
         stats["polygons"] = polygons;
-        stats["tets"] = cdt.tets.size();
+        stats["tets"] = b.domain.tets.size();
+        stats["removed_tets"] = b.domain.removed;
         stats["faces"] = cdt.faces.size();
         stats["flips_23"] = c.flips.flip_count(core::FlipKind::k23);
         stats["flips_32"] = c.flips.flip_count(core::FlipKind::k32);
@@ -452,7 +489,7 @@ public:
         stats["certify_calls"] = c.certify_calls;
         stats_ = stats;
 
-        const auto m = static_cast<py::ssize_t>(cdt.tets.size());
+        const auto m = static_cast<py::ssize_t>(b.domain.tets.size());
         const auto f = static_cast<py::ssize_t>(cdt.faces.size());
         std::vector<std::array<std::uint32_t, 3>> faces(cdt.faces.size());
         std::vector<std::int32_t> markers(cdt.faces.size());
@@ -461,11 +498,12 @@ public:
             markers[i] = cdt.faces[i].marker;
         }
         const auto s = static_cast<py::ssize_t>(cdt.protection.inserted.size());
-        simplices_ = adopt(std::move(cdt.tets), {m, 4});
+        simplices_ = adopt(std::move(b.domain.tets), {m, 4});
         faces_ = adopt(std::move(faces), {f, 3});
         face_markers_ = adopt(std::move(markers), {f});
         steiner_ = adopt(std::move(cdt.protection.inserted), {s});
-        region_markers_ = with_regions ? py::object(adopt(std::move(b.regions), {m})) : py::none();
+        region_markers_ =
+            with_regions ? py::object(adopt(std::move(b.domain.regions), {m})) : py::none();
     }
 
     py::object to_meshio() const {
@@ -508,6 +546,8 @@ Cdt make_cdt(const py::handle& points,
              const py::handle& segments,
              const py::handle& markers,
              const py::handle& regions,
+             const py::handle& holes,
+             bool convex_hull,
              bool protect,
              std::size_t max_protection_points) {
     core::Plc plc;
@@ -527,8 +567,13 @@ Cdt make_cdt(const py::handle& points,
     if (!regions.is_none()) {
         plc.regions = regions_of(regions);
     }
-    return Cdt(
-        std::move(plc), core::CdtOptions{protect, max_protection_points}, !regions.is_none());
+    if (!holes.is_none()) {
+        plc.volume_holes = holes_of(holes);
+    }
+    return Cdt(std::move(plc),
+               core::CdtOptions{protect, max_protection_points},
+               !regions.is_none(),
+               convex_hull);
 }
 
 }  // namespace
@@ -546,7 +591,8 @@ Attributes
 points : (n', 3) float64
     The input points, then the protecting (Steiner) points added with ``protect=True``.
 simplices : (m, 4) int32
-    Tetrahedra of the convex hull of the points, as row indices into ``points``, each with
+    Tetrahedra of the domain the polygons bound (of the whole convex hull with
+    ``convex_hull=True``), minus the ``holes``, as row indices into ``points``, each with
     positive volume by the right-hand rule (cavity.orient3d of each row is -1).
 faces : (f, 3) int32
     The triangles the polygons are divided into (in no particular orientation).
@@ -558,7 +604,7 @@ region_markers : (m,) int32 or None
     With ``regions``: the marker of the region holding each tetrahedron, 0 for none.
 stats : dict
     Counts of the construction: points, input_points, protection_points, protection_rounds,
-    polygons, tets, faces, flips_23, flips_32, flips_44, events_queued, events_stale,
+    polygons, tets (kept), removed_tets (carved away), faces, flips_23, flips_32, flips_44, events_queued, events_stale,
     events_held, region_tets, region_vertices, max_region_vertices, rotary_steps,
     search_visited, certify_calls.
 npoints, nsimplex : int
@@ -598,14 +644,18 @@ data "region" when regions were given. Raises ImportError when meshio is not ins
           py::arg("segments") = py::none(),
           py::arg("markers") = py::none(),
           py::arg("regions") = py::none(),
+          py::arg("holes") = py::none(),
+          py::arg("convex_hull") = false,
           py::arg("protect") = false,
           py::arg("max_protection_points") = 100000,
           R"doc(
 Constrained Delaunay tetrahedralization (CDT) of a piecewise linear complex (PLC).
 
 The Delaunay triangulation of the points, then each polygon inserted by flips (Cheng, Dey &
-Shewchuk §5.8): the result fills the convex hull of the points, and every polygon is a union of
-its triangles. Exact; the GIL is released while it runs. This is ``cavity cdt`` without the files.
+Shewchuk §5.8), every polygon a union of its triangles; then, as TetGen does with -p, the domain
+the polygons bound is carved out of the convex hull: the tetrahedra reachable from the hull
+without crossing a polygon are removed, and so are those reachable from each hole point. Exact;
+the GIL is released while it runs. This is ``cavity cdt`` without the files.
 
 Parameters
 ----------
@@ -629,6 +679,14 @@ regions : (r, 4) array_like of float, optional
     TetGen's region list, rows [x, y, z, marker]: the tetrahedra reachable from the one holding
     (x, y, z) without crossing a polygon get the (integer) marker, the first region to reach a
     tetrahedron keeping it (``region_markers``).
+holes : (h, 3) array_like of float, optional
+    TetGen's volume hole list: the tetrahedra reachable from the one holding each point, without
+    crossing a polygon, are removed. A point on a face, edge or vertex in no polygon removes the
+    same tetrahedra whichever tetrahedron holds it; a point on a polygon or outside the convex
+    hull is refused by its row.
+convex_hull : bool
+    Keep the whole convex hull: neither the exterior nor the holes are removed (hole points are
+    still checked).
 protect : bool
     Split PLC edges that are not Delaunay edges at points lying exactly on them (double
     coordinates), until the PLC is edge-protected. Off: such a PLC is refused, naming the edges.
@@ -647,7 +705,8 @@ ValueError
     corners, a polygon not flat or collinear. With the core's message, which calls polygon i
     "facet i" as TetGen does: coinciding points, a PLC that is not edge-protected (without
     protect), an edge through a polygon, overlapping polygons, crossing loops, a hole point on a
-    loop side. A region point outside the convex hull names its row.
+    loop side. A region point outside the convex hull, or a hole point outside it or on a
+    polygon, names its row.
 )doc");
 }
 

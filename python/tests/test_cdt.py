@@ -112,9 +112,12 @@ def test_every_polygon_form_gives_the_same_mesh():
 
 def test_no_polygons_is_the_delaunay_triangulation():
     points = np.random.default_rng(3).random((60, 3))
-    c = cavity.cdt(points, np.zeros((0, 3), dtype=int))
+    c = cavity.cdt(points, np.zeros((0, 3), dtype=int), convex_hull=True)
     assert sorted_rows(c.simplices) == sorted_rows(cavity.Delaunay(points).simplices)
     assert c.faces.shape == (0, 3)
+    # No polygon encloses anything: the whole hull is exterior, and carved away.
+    carved = cavity.cdt(points, np.zeros((0, 3), dtype=int))
+    assert carved.nsimplex == 0 and carved.stats["removed_tets"] == c.nsimplex
 
 
 def schoenhardt(twisted):
@@ -147,7 +150,7 @@ def test_schoenhardt_polyhedron_needs_protection():
     with pytest.raises(ValueError, match=r"not edge-protected: 1 edge\(s\) .*: 0-4 .*protect=True"):
         cavity.cdt(points, polygons)
     markers = np.arange(len(polygons))
-    c = cavity.cdt(points, polygons, markers=markers, protect=True)
+    c = cavity.cdt(points, polygons, markers=markers, protect=True, convex_hull=True)
     assert c.npoints > 6
     assert np.array_equal(c.steiner, np.arange(6, c.npoints))
     assert np.array_equal(c.points[:6], points)
@@ -175,7 +178,7 @@ def test_schoenhardt_polyhedron_needs_protection():
 def test_polygon_in_a_point_cloud_is_inserted_by_flips():
     square = [[0.125, 0.125, 0.5], [0.875, 0.125, 0.5], [0.875, 0.875, 0.5], [0.125, 0.875, 0.5]]
     points = np.vstack([square, np.random.default_rng(5).random((200, 3))])
-    c = cavity.cdt(points, [[0, 1, 2, 3]], markers=[4], protect=True)
+    c = cavity.cdt(points, [[0, 1, 2, 3]], markers=[4], protect=True, convex_hull=True)
     st = c.stats
     assert st["flips_23"] + st["flips_32"] > 0 and st["events_queued"] > 0
     assert st["region_tets"] > 0 and st["certify_calls"] > 0
@@ -373,6 +376,75 @@ def test_regions_mark_the_tetrahedra_between_polygons():
     assert np.array_equal(c.region_markers, np.where(z < 0.5, 7, 0))
 
 
+def prism(loop):
+    """The prism over a polygon `loop` of (x, y) corners, from z = 0 to z = 1: its two caps and its
+    sides as polygons."""
+    k = len(loop)
+    points = np.array([[x, y, z] for z in (0, 1) for x, y in loop], dtype=float)
+    polygons = [list(range(k)), list(range(k, 2 * k))]
+    polygons += [[i, (i + 1) % k, k + (i + 1) % k, k + i] for i in range(k)]
+    return points, polygons
+
+
+L_SHAPE = [(0, 0), (1, 0), (1, 0.5), (0.5, 0.5), (0.5, 1), (0, 1)]
+
+
+def test_l_shaped_prism_keeps_its_domain():
+    points, polygons = prism(L_SHAPE)
+    c = cavity.cdt(points, polygons, protect=True)
+    hull = cavity.cdt(points, polygons, protect=True, convex_hull=True)
+    assert_positive(c)
+    assert volumes(c).sum() == pytest.approx(0.75, abs=1e-15)
+    assert volumes(hull).sum() == pytest.approx(0.875, abs=1e-15)
+    assert c.nsimplex + c.stats["removed_tets"] == hull.nsimplex and c.stats["removed_tets"] > 0
+    # Every kept tetrahedron is inside the L: its centroid is not in the notch [0.5, 1]^2.
+    centroids = c.points[c.simplices].mean(axis=1)
+    assert not np.any((centroids[:, 0] > 0.5) & (centroids[:, 1] > 0.5))
+
+
+def cube_with_cavity():
+    """[0, 1]^3 holding the cube [1/4, 3/4]^3: both surfaces as quads."""
+    inner = 0.25 + 0.5 * CUBE
+    points = np.vstack([CUBE, inner])
+    return points, CUBE_QUADS + [[v + 8 for v in q] for q in CUBE_QUADS]
+
+
+def test_hole_point_carves_the_inner_cube():
+    points, polygons = cube_with_cavity()
+    c = cavity.cdt(points, polygons, holes=[[0.5, 0.5, 0.5]])
+    assert_positive(c)
+    assert volumes(c).sum() == pytest.approx(1 - 1 / 8, abs=1e-15)
+    centroids = c.points[c.simplices].mean(axis=1)
+    assert not np.any(np.all((centroids > 0.25) & (centroids < 0.75), axis=1))
+    # Without the hole point the inner cube stays, and so it does in the whole hull.
+    whole = cavity.cdt(points, polygons)
+    assert volumes(whole).sum() == pytest.approx(1, abs=1e-15)
+    hull = cavity.cdt(points, polygons, holes=[[0.5, 0.5, 0.5]], convex_hull=True)
+    assert np.array_equal(hull.simplices, whole.simplices)
+    assert hull.nsimplex == c.nsimplex + c.stats["removed_tets"]
+    # A hole point in the shell leaves the inner cube; at a vertex in no polygon (a PLC point
+    # of the shell), it is in several tetrahedra, all in the shell, and carves the same.
+    shell = np.vstack([points, [[0.125, 0.5, 0.5]]])
+    for hole in ([0.1, 0.1, 0.1], [0.125, 0.5, 0.5]):
+        inner = cavity.cdt(shell, polygons, holes=[hole])
+        assert volumes(inner).sum() == pytest.approx(1 / 8, abs=1e-15)
+        centroids = inner.points[inner.simplices].mean(axis=1)
+        assert np.all(np.all((centroids > 0.25) & (centroids < 0.75), axis=1))
+
+
+@pytest.mark.parametrize("holes, message", [
+    ([[0.5, 0.5, 0.5], [2, 0.5, 0.5]], "holes row 1: volume hole point lies outside"),
+    ([[0.5, 0.5, 0.75]], "holes row 0: volume hole point lies on a polygon"),
+    ([[0.25, 0.25, 0.25]], "holes row 0: volume hole point lies on a polygon"),
+    ([[0.5, 0.5]], r"holes must have shape \(n, 3\)"),
+])
+def test_bad_hole_points_are_named(holes, message):
+    points, polygons = cube_with_cavity()
+    for convex_hull in (False, True):
+        with pytest.raises(ValueError, match=message):
+            cavity.cdt(points, polygons, holes=holes, convex_hull=convex_hull)
+
+
 def test_to_meshio():
     meshio = pytest.importorskip("meshio")
     points, polygons = split_box()
@@ -429,7 +501,9 @@ def poly_cdt():
     points, polygons, markers, segments = read_poly(POLY)
     with pytest.raises(ValueError, match=r"not edge-protected: 1 edge\(s\) .*: 8-9 "):
         cavity.cdt(points, polygons, markers=markers, segments=segments)
-    return cavity.cdt(points, polygons, markers=markers, segments=segments, protect=True)
+    # A triangle and a segment in a box without walls: no domain, so the whole hull.
+    return cavity.cdt(points, polygons, markers=markers, segments=segments, protect=True,
+                      convex_hull=True)
 
 
 def test_poly_fixture_as_the_cli_reports_it(poly_cdt):
@@ -448,8 +522,8 @@ def test_poly_fixture_same_mesh_as_the_cli(poly_cdt, tmp_path):
     if executable is None:
         pytest.skip("no `cavity` program (set CAVITY_EXECUTABLE)")
     prefix = tmp_path / "out"
-    subprocess.run([executable, "cdt", str(POLY), "-o", str(prefix), "--protect", "--quiet"],
-                   check=True)
+    subprocess.run([executable, "cdt", str(POLY), "-o", str(prefix), "--protect", "--convex-hull",
+                    "--quiet"], check=True)
     ele = np.loadtxt(f"{prefix}.ele", skiprows=1, dtype=np.int64, comments="#")
     face = np.loadtxt(f"{prefix}.face", skiprows=1, dtype=np.int64, comments="#", ndmin=2)
     node = np.loadtxt(f"{prefix}.node", skiprows=1, comments="#")

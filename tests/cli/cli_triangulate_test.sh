@@ -123,6 +123,93 @@ POLY
 awk 'NR==2 {t=$3; $3=$4; $4=t} {print}' box.ele > box_flipped.ele
 "$cavity" check box.node box_flipped.ele --poly box.poly --quiet 2>/dev/null && fail "check --poly accepts a flipped tetrahedron"
 
+# Carving: the prism over an L (the unit square minus [1/2, 1]^2, z in [0, 1]) keeps its volume
+# 3/4 and nothing in the notch; --convex-hull keeps the hull (7/8), and check --poly validates
+# each as what it is.
+lprism() {  # lprism HOLES: the .poly with the given hole list (count line, then points)
+  printf '12 3 0 0\n'
+  local i=0
+  for z in 0 1; do
+    for xy in "0 0" "1 0" "1 0.5" "0.5 0.5" "0.5 1" "0 1"; do
+      echo "$i $xy $z"; i=$((i + 1))
+    done
+  done
+  printf '8 0\n1\n6 0 1 2 3 4 5\n1\n6 6 7 8 9 10 11\n'
+  for i in 0 1 2 3 4 5; do
+    j=$(((i + 1) % 6))
+    printf '1\n4 %d %d %d %d\n' "$i" "$j" $((j + 6)) $((i + 6))
+  done
+  printf '%b' "$1"
+}
+lprism '0\n' > lprism.poly
+"$cavity" cdt lprism.poly -o lprism --protect > lprism.txt || fail "carve: cdt failed"
+volume=$(sed -n 's/.*exterior and holes removed): [0-9]* tetrahedra kept, [1-9][0-9]* removed, volume \([0-9.e+-]*\)$/\1/p' lprism.txt)
+awk -v v="${volume:-nan}" 'BEGIN {exit !(v - 0.75 <= 1e-15 && 0.75 - v <= 1e-15)}' ||
+  fail "carve: volume '$volume' is not 0.75 in '$(grep domain lprism.txt)'"
+"$cavity" check lprism.node lprism.ele --poly lprism.poly --quiet || fail "carve: check --poly rejects it"
+"$cavity" check lprism.node lprism.ele --poly lprism.poly --convex-hull --quiet 2>/dev/null &&
+  fail "carve: check --poly --convex-hull accepts the carved L"
+"$cavity" cdt lprism.poly -o lhull --protect --convex-hull > lhull.txt || fail "carve: --convex-hull failed"
+grep -q "domain (convex hull): [0-9]* tetrahedra kept, 0 removed, volume 0.87" lhull.txt ||
+  fail "carve: --convex-hull: '$(grep domain lhull.txt)'"
+"$cavity" check lhull.node lhull.ele --poly lprism.poly --convex-hull --quiet ||
+  fail "carve: check --poly --convex-hull rejects the hull"
+"$cavity" check lhull.node lhull.ele --poly lprism.poly --quiet 2>/dev/null &&
+  fail "carve: check --poly accepts the hull of the L as its domain"
+# --convex-hull writes what `cavity cdt` wrote before carving existed (commit b17c6bf), and the
+# carved .ele lists some of those tetrahedra, as they were.
+cat > lhull_expected.ele <<'ELE'
+0 1 0 7 9
+1 3 10 2 4
+2 9 0 6 11
+3 3 0 9 11
+4 5 0 3 11
+5 3 0 1 9
+6 10 3 9 11
+7 5 3 4 11
+8 7 0 6 9
+9 4 3 10 11
+10 8 1 7 9
+11 3 1 2 9
+12 2 1 8 9
+13 2 10 3 9
+14 8 10 2 9
+ELE
+tail -n +2 lhull.ele | cmp -s - lhull_expected.ele || fail "carve: --convex-hull output changed"
+cut -d' ' -f2- lhull_expected.ele > lhull_tets.txt
+tail -n +2 lprism.ele | cut -d' ' -f2- | grep -qvxFf lhull_tets.txt &&
+  fail "carve: a kept tetrahedron is not one of the hull's"
+kept=$(head -1 lprism.ele | cut -d' ' -f1)
+removed=$(sed -n 's/.* kept, \([0-9]*\) removed.*/\1/p' lprism.txt)
+[ "$((kept + removed))" = "$(head -1 lhull.ele | cut -d' ' -f1)" ] ||
+  fail "carve: $kept kept + $removed removed is not the hull's $(head -1 lhull.ele)"
+# A convex PLC (the box) is its own hull: the same files either way.
+"$cavity" cdt box.poly -o boxhull --convex-hull --quiet || fail "carve: box --convex-hull failed"
+cmp -s box.ele boxhull.ele || fail "carve: the box's domain differs from its hull"
+# A hole point outside the hull, or on a polygon, is refused by its line; nothing is written.
+lprism '2\n0 0.25 0.25 0.5\n1 0.75 0.75 0.5\n' > lnotch.poly
+lprism '1\n0 0.25 0.25 2\n' > lout.poly
+lprism '1\n0 0.25 0.25 1\n' > lon.poly
+"$cavity" cdt lout.poly -o lout --protect 2>err.txt && fail "carve: hole outside accepted"
+grep -q "lout.poly:32: volume hole point lies outside" err.txt || fail "carve: '$(cat err.txt)'"
+ls lout.* 2>/dev/null | grep -qv 'lout.poly' && fail "carve: hole outside wrote output"
+"$cavity" cdt lon.poly -o lon --protect 2>err.txt && fail "carve: hole on a polygon accepted"
+grep -q "lon.poly:32: volume hole point lies on a polygon" err.txt || fail "carve: '$(cat err.txt)'"
+# A hole point in the notch (the exterior) removes nothing more; one in the L removes it all.
+"$cavity" cdt lnotch.poly -o lnotch --protect > lnotch.txt 2>err.txt || fail "carve: notch holes failed"
+grep -q "0 tetrahedra kept" lnotch.txt || fail "carve: the L's hole left '$(grep domain lnotch.txt)'"
+grep -q "lnotch.poly: the polygons enclose no volume" err.txt || fail "carve: no warning: '$(cat err.txt)'"
+# A hole in the box's lower half: the upper half (volume 4 of 8) stays, with the lower half of
+# each side polygon and the bottom gone with the hole, and check --poly accepts it.
+sed '$ s/^0$/1\n1 1 1 0.5/' box.poly > boxhole.poly
+"$cavity" cdt boxhole.poly -o boxhole > boxhole.txt || fail "carve: box with a hole failed"
+volume=$(sed -n 's/.* removed, volume \([0-9.e+-]*\)$/\1/p' boxhole.txt)
+awk -v v="${volume:-nan}" 'BEGIN {exit !(v - 4 <= 4e-15 && 4 - v <= 4e-15)}' ||
+  fail "carve: box with a hole: '$(grep domain boxhole.txt)'"
+"$cavity" check box.node boxhole.ele --poly boxhole.poly --quiet || fail "carve: check rejects the upper half"
+"$cavity" check box.node box.ele --poly boxhole.poly --quiet 2>err.txt && fail "carve: check accepts the hole kept"
+grep -q "volume hole point 1 (line 31) lies in tetrahedron" err.txt || fail "carve: '$(cat err.txt)'"
+
 # VTU output.
 "$cavity" triangulate cube.node -o cube --format vtu --quiet || fail "vtu: failed"
 grep -q "UnstructuredGrid" cube.vtu || fail "vtu: not a VTK XML file"

@@ -8,7 +8,9 @@
 #include "cavity/core/cdt/edge_protection.h"
 #include "cavity/core/check/complex_from_tets.h"
 #include "cavity/perturbation/sos.h"
+#include "cavity/predicates/orient3d.h"
 #include "exact_plane.h"
+#include "points_in_tets.h"
 
 namespace cavity::core {
 
@@ -88,11 +90,12 @@ std::string tet_name(const std::array<std::uint32_t, 4>& t, int base) {
 }
 
 /// The facet's triangles among the mesh triangles lying in its plane, after checking that no
-/// tetrahedron crosses it and that they cover its area.
-std::vector<Triangle> polygon_faces(const Plc& plc,
-                                    std::size_t index,
-                                    const BoxedMesh& mesh,
-                                    Report& report) {
+/// tetrahedron crosses it and, for the whole hull, that they cover its area. A carved domain holds
+/// only the part of a polygon next to its tetrahedra (none of a polygon with removed tetrahedra on
+/// both sides, the lower half of a wall whose upper side was a hole), and a part of the polygon in
+/// the domain but not covered would be crossed by a tetrahedron, which is checked.
+std::vector<Triangle> polygon_faces(
+    const Plc& plc, std::size_t index, const BoxedMesh& mesh, bool carved, Report& report) {
     const PlcFacet& facet = plc.facets[index];
     const std::string name = facet_name(plc, index);
     const auto plane = ExactPlane::of_facet(plc, facet);
@@ -145,26 +148,90 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
             covered += triangle_area2(*plane, pts[g[0]], pts[g[1]], pts[g[2]]);
         }
     }
-    if (covered != facet_region_area2(plc, facet, *plane)) {
+    if (!carved && covered != facet_region_area2(plc, facet, *plane)) {
         report.add(name + " is not a union of mesh triangles (their area differs from its area)");
     }
     return faces;
 }
 
-}  // namespace
+/// The tetrahedra on a mesh triangle: `count` of them, the first two in `tet` (more: a problem).
+struct Sides {
+    std::size_t count = 0;
+    std::array<std::uint32_t, 2> tet{};
+};
 
-CdtValidation validate_cdt(const Plc& plc, std::span<const std::array<std::uint32_t, 4>> tets) {
-    CdtValidation result;
-    Report report(result);
-    const int base = plc.points.index_base;
-    for (const auto& t : tets) {
-        for (std::uint32_t v : t) {
-            if (v >= plc.points.size()) {
-                report.add(tet_name(t, base) + " names a point that does not exist");
-                return result;
+/// Each mesh triangle (sorted) with its tetrahedra.
+using TriangleSides = std::map<Triangle, Sides>;
+
+TriangleSides triangle_sides(std::span<const std::array<std::uint32_t, 4>> tets) {
+    TriangleSides sides;
+    for (std::uint32_t t = 0; t < tets.size(); ++t) {
+        for (int f = 0; f < 4; ++f) {
+            const auto g = facet_vertices(tets[t], f);
+            Triangle s{g[0], g[1], g[2]};
+            std::sort(s.begin(), s.end());
+            Sides& on = sides[s];
+            if (on.count < 2) {
+                on.tet[on.count] = t;
             }
+            ++on.count;
         }
     }
+    return sides;
+}
+
+/// The vertex of t not in triangle g.
+std::uint32_t apex(const std::array<std::uint32_t, 4>& t, const Triangle& g) {
+    for (std::uint32_t v : t) {
+        if (std::find(g.begin(), g.end(), v) == g.end()) {
+            return v;
+        }
+    }
+    return t[0];  // unreachable: g is a facet of t
+}
+
+/// A carved domain keeps no tetrahedron whose closure holds a volume hole point (carve_cdt refuses
+/// hole points on polygons, and the domain's boundary is polygons), nor a PLC point that is not
+/// one of its vertices (it would be a polygon corner or segment end hidden inside the domain).
+void check_points_outside(const Plc& plc,
+                          std::span<const std::array<std::uint32_t, 4>> tets,
+                          const std::vector<bool>& used,
+                          Report& report) {
+    std::vector<Point3> probes;
+    std::vector<std::uint32_t> unused;
+    for (const PlcVolumeHole& hole : plc.volume_holes) {
+        probes.push_back(hole.point);
+    }
+    for (std::uint32_t v = 0; v < used.size(); ++v) {
+        if (!used[v]) {
+            probes.push_back(plc.points.points[v]);
+            unused.push_back(v);
+        }
+    }
+    const auto in = points_in_tets(plc.points.points, tets, probes);
+    const std::size_t holes = plc.volume_holes.size();
+    const auto base = static_cast<std::size_t>(plc.points.index_base);
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        if (!in[i]) {
+            continue;
+        }
+        const std::string where = " lies in " + tet_name(tets[*in[i]], plc.points.index_base);
+        if (i < holes) {
+            const std::size_t line = plc.volume_holes[i].line;
+            report.add("volume hole point " + std::to_string(i + base) +
+                       (line > 0 ? " (line " + std::to_string(line) + ")" : std::string()) + where);
+        } else {
+            report.add("point " + std::to_string(unused[i - holes] + base) +
+                       " is not a vertex of the carved mesh but" + where);
+        }
+    }
+}
+
+/// The whole hull: the complex glued with ghosts must be valid with a convex boundary.
+void check_hull_complex(const Plc& plc,
+                        std::span<const std::array<std::uint32_t, 4>> tets,
+                        Report& report) {
+    const int base = plc.points.index_base;
     // The complex checks name vertices by their ids: number them as the file does (ids shifted by
     // the base, keys unchanged so the perturbation is the same), so every message can be matched
     // against the input.
@@ -181,46 +248,96 @@ CdtValidation validate_cdt(const Plc& plc, std::span<const std::array<std::uint3
         keys[v] = static_cast<std::uint32_t>(v < static_cast<std::size_t>(base) ? 0 : v - base);
     }
     const Geometry geometry(std::move(points), std::move(keys), {});
-    ArrayStorage storage;
     try {
-        storage = complex_from_tets(numbered);
+        for (const std::string& p : check_complex(complex_from_tets(numbered), geometry)) {
+            report.add(p);
+        }
     } catch (const Error& e) {
         report.add(e.what());
-        return result;
+        return;
     }
-    for (const std::string& p : check_complex(storage, geometry)) {
-        report.add(p);
+}
+
+/// A carved domain: its boundary may be anything, so the complex is checked triangle by
+/// triangle (positive volumes, at most two tetrahedra on a triangle, on opposite sides).
+void check_carved_complex(const Plc& plc,
+                          std::span<const std::array<std::uint32_t, 4>> tets,
+                          const TriangleSides& sides,
+                          Report& report) {
+    const auto& pts = plc.points.points;
+    const int base = plc.points.index_base;
+    for (const auto& t : tets) {
+        // Positive right-hand volume is orient3d < 0 (handedness.h).
+        if (predicates::orient3d(pts[t[0]], pts[t[1]], pts[t[2]], pts[t[3]]) != Sign::kNeg) {
+            report.add(tet_name(t, base) + ": volume not positive (right-hand rule)");
+        }
     }
+    for (const auto& [g, on] : sides) {
+        const auto b = static_cast<std::uint32_t>(base);
+        const std::string name = "triangle " + std::to_string(g[0] + b) + " " +
+                                 std::to_string(g[1] + b) + " " + std::to_string(g[2] + b);
+        if (on.count > 2) {
+            report.add(name + " is on " + std::to_string(on.count) + " tetrahedra");
+        } else if (on.count == 2 &&
+                   predicates::orient3d(
+                       pts[g[0]], pts[g[1]], pts[g[2]], pts[apex(tets[on.tet[0]], g)]) ==
+                       predicates::orient3d(
+                           pts[g[0]], pts[g[1]], pts[g[2]], pts[apex(tets[on.tet[1]], g)])) {
+            report.add(name + ": its two tetrahedra are on the same side");
+        }
+    }
+}
+
+}  // namespace
+
+CdtValidation validate_cdt(const Plc& plc,
+                           std::span<const std::array<std::uint32_t, 4>> tets,
+                           CdtDomain domain) {
+    CdtValidation result;
+    Report report(result);
+    const int base = plc.points.index_base;
+    const auto b = static_cast<std::uint32_t>(base);
+    for (const auto& t : tets) {
+        for (std::uint32_t v : t) {
+            if (v >= plc.points.size()) {
+                report.add(tet_name(t, base) + " names a point that does not exist");
+                return result;
+            }
+        }
+    }
+    const TriangleSides sides = triangle_sides(tets);
+    const bool carved = domain == CdtDomain::kCarved;
     std::vector<bool> used(plc.points.size(), false);
     for (const auto& t : tets) {
         for (std::uint32_t v : t) {
             used[v] = true;
         }
     }
+    if (carved) {
+        check_carved_complex(plc, tets, sides, report);
+        check_points_outside(plc, tets, used, report);
+    } else {
+        check_hull_complex(plc, tets, report);
+    }
     for (std::size_t v = 0; v < used.size(); ++v) {
-        if (!used[v]) {
-            report.add("point " + std::to_string(v + static_cast<std::size_t>(base)) +
-                       " is not a vertex");
+        if (!carved && !used[v]) {
+            report.add("point " + std::to_string(v + b) + " is not a vertex");
         }
     }
     for (const Edge& e : unprotected_edges(plc, tets)) {
-        report.add("PLC edge " + std::to_string(e[0] + static_cast<std::uint32_t>(base)) + "-" +
-                   std::to_string(e[1] + static_cast<std::uint32_t>(base)) +
+        if (carved && (!used[e[0]] || !used[e[1]])) {
+            continue;  // removed with the exterior or a hole
+        }
+        report.add("PLC edge " + std::to_string(e[0] + b) + "-" + std::to_string(e[1] + b) +
                    " is not an edge of the mesh");
     }
     if (!result.ok()) {
         return result;
     }
-    std::set<Triangle> triangles;
-    for (const auto& t : tets) {
-        for (int f = 0; f < 4; ++f) {
-            const auto g = facet_vertices(t, f);
-            Triangle s{g[0], g[1], g[2]};
-            std::sort(s.begin(), s.end());
-            triangles.insert(s);
-        }
+    BoxedMesh mesh{tets, {}, {}, {}};
+    for (const auto& [g, on] : sides) {
+        mesh.triangles.push_back(g);
     }
-    BoxedMesh mesh{tets, {}, {triangles.begin(), triangles.end()}, {}};
     for (const auto& t : tets) {
         mesh.tet_boxes.push_back(Box::of(plc.points.points, t));
     }
@@ -229,41 +346,32 @@ CdtValidation validate_cdt(const Plc& plc, std::span<const std::array<std::uint3
     }
     std::set<Triangle> constrained;
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
-        for (const Triangle& g : polygon_faces(plc, f, mesh, report)) {
+        for (const Triangle& g : polygon_faces(plc, f, mesh, carved, report)) {
             constrained.insert(g);
         }
     }
     result.polygon_triangles = constrained.size();
-    for (TetId t = 0; t < storage.capacity(); ++t) {
-        if (!storage.alive(t) || is_ghost(storage.vertices(t))) {
+    const auto& pts = plc.points.points;
+    for (const auto& [g, on] : sides) {
+        if (constrained.contains(g)) {
             continue;
         }
-        const TetVertices& v = storage.vertices(t);
-        for (int f = 0; f < 4; ++f) {
-            const HalfFacet h = storage.adjacent(t, f);
-            if (h == kNoHalfFacet || is_ghost(storage.vertices(tet_of(h)))) {
-                continue;
+        const std::string name = "triangle " + std::to_string(g[0] + b) + " " +
+                                 std::to_string(g[1] + b) + " " + std::to_string(g[2] + b);
+        if (on.count == 1) {
+            // The hull's boundary was checked convex; a carved domain's must be polygons.
+            if (carved) {
+                report.add(name + " bounds the carved domain but is in no polygon");
             }
-            const TetVertices& w = storage.vertices(tet_of(h));
-            Triangle g = facet_vertices(v, f);  // numbered like the file
-            std::sort(g.begin(), g.end());
-            const auto b = static_cast<std::uint32_t>(base);
-            if (constrained.contains({g[0] - b, g[1] - b, g[2] - b})) {
-                continue;
-            }
-            const VertexId q = w[static_cast<std::size_t>(facet_of(h))];
-            const auto& gm = geometry;
-            if (perturbation::insphere_sos(
-                    gm.point(v[0]),
-                    gm.point(v[1]),
-                    gm.point(v[2]),
-                    gm.point(v[3]),
-                    gm.point(q),
-                    {gm.key(v[0]), gm.key(v[1]), gm.key(v[2]), gm.key(v[3]), gm.key(q)}) ==
-                Sign::kPos) {
-                report.add("triangle " + std::to_string(g[0]) + " " + std::to_string(g[1]) + " " +
-                           std::to_string(g[2]) + " is in no polygon and not locally Delaunay");
-            }
+            continue;
+        }
+        // Stored mirrored, as the perturbation expects orient3d > 0; keys are the indices.
+        const auto& t = tets[on.tet[0]];
+        const std::uint32_t q = apex(tets[on.tet[1]], g);
+        if (perturbation::insphere_sos(
+                pts[t[1]], pts[t[0]], pts[t[2]], pts[t[3]], pts[q], {t[1], t[0], t[2], t[3], q}) ==
+            Sign::kPos) {
+            report.add(name + " is in no polygon and not locally Delaunay");
         }
     }
     return result;

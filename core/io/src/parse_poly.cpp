@@ -230,7 +230,8 @@ Plc parse_poly(const std::filesystem::path& file) {
         const auto header = in.next_or_pending("the hole header");
         const std::uint64_t holes = in.bounded_count(header[0], "number of holes");
         for (std::uint64_t h = 0; h < holes; ++h) {
-            plc.volume_holes.push_back(hole_point(in, in.next("a volume hole")));
+            const Point3 point = hole_point(in, in.next("a volume hole"));
+            plc.volume_holes.push_back({point, in.line()});
         }
     }
     if (in.more()) {

@@ -68,7 +68,7 @@ void write_poly(AtomicFileGroup::Writer& out, const Plc& plc) {
     for (std::size_t h = 0; h < plc.volume_holes.size(); ++h) {
         append_uint(text, h + base);
         text += ' ';
-        append_point(text, plc.volume_holes[h]);
+        append_point(text, plc.volume_holes[h].point);
     }
     if (!plc.regions.empty()) {
         append_uint(text, plc.regions.size());

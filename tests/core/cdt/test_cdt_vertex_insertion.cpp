@@ -436,7 +436,7 @@ TEST(CdtVertexInsertion, WrittenPlcReadsBack) {
     plc.points.points.push_back({1.375, 1.375, 0.6875});
     plc.segments.push_back({a, a + 1});
     plc.facets[0].holes.push_back({2, 2, 0});
-    plc.volume_holes.push_back({-1, -1, -1});
+    plc.volume_holes.push_back({{-1, -1, -1}});
     LiveCdt live(std::move(plc), CdtOptions{true});
     ASSERT_TRUE(live.insert_vertex({1.125, 1.125, 0.5625}).inserted());
     ASSERT_TRUE(live.insert_vertex({4, 1.75, 2.03125}).inserted());

@@ -37,13 +37,20 @@ struct PlcRegion {
     std::size_t line = 0;  ///< in the .poly file (0: not from a file)
 };
 
+/// A volume hole of a .poly file (TetGen's hole list): the tetrahedra reachable from the one
+/// holding `point` without crossing a polygon are carved away (cdt_carve.h).
+struct PlcVolumeHole {
+    Point3 point;
+    std::size_t line = 0;  ///< in the .poly file (0: not from a file)
+};
+
 struct Plc {
     PointSet points;
     std::vector<PlcFacet> facets;
     std::vector<std::array<std::uint32_t, 2>> segments;  ///< explicit segments (2-corner polygons)
-    /// Read but not used: the CDT tetrahedralizes the whole convex hull of the points, and
-    /// carving volumes out of it is left to the caller.
-    std::vector<Point3> volume_holes;
+    /// The CDT tetrahedralizes the whole convex hull of the points; carve_cdt (cdt_carve.h)
+    /// removes these holes' volumes (and the exterior) from it.
+    std::vector<PlcVolumeHole> volume_holes;
     std::vector<PlcRegion> regions;
     std::string source;
 };
