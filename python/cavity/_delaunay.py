@@ -324,6 +324,10 @@ class Delaunay:
         if not self._engine.incremental:
             raise RuntimeError("incremental mode not enabled or already closed")
         if restart:
+            if (weights is None) != (self.weights is None):
+                raise ValueError("this triangulation is weighted: add_points needs weights"
+                                 if self.weights is not None else
+                                 "this triangulation is unweighted: add_points takes no weights")
             all_points = np.concatenate([self.points, np.asarray(points, dtype=np.float64)])
             all_weights = None
             if weights is not None:

@@ -243,9 +243,15 @@ def test_add_points_weighted_and_restart():
     assert d.redundant.tolist() == whole.redundant.tolist()
     with pytest.raises(ValueError, match="needs weights"):
         d.add_points(points[:3])
+    with pytest.raises(ValueError, match="needs weights"):
+        d.add_points(points[:3], restart=True)
+    d.add_points(points[:0], restart=True, weights=weights[:0])
+    assert sorted_rows(d.simplices) == sorted_rows(whole.simplices)
     e = cavity.Delaunay(points[:200], incremental=True)
     e.add_points(points[200:], restart=True)
     assert sorted_rows(e.simplices) == sorted_rows(cavity.Delaunay(points).simplices)
+    with pytest.raises(ValueError, match="takes no weights"):
+        e.add_points(points[:3], restart=True, weights=weights[:3])
 
 
 def test_add_points_needs_incremental_mode_and_stops_after_close():
