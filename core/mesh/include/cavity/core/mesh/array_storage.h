@@ -42,6 +42,18 @@ public:
     }
 
     void end_operation() { recycle_released(); }
+
+    /// Starts loading the records of t's neighbours. The cavity search and the walk read them
+    /// next, and at 10^6 points most of those first reads missed every cache (about 150 ns each on
+    /// the project's machine; issue 13): issued early, the loads overlap with t's own tests. A
+    /// hint, with no effect on any result.
+    void prefetch_neighbours(TetId t) const {
+        for (HalfFacet h : record(t).n) {
+            if (h != kNoHalfFacet) {
+                __builtin_prefetch(&record(tet_of(h)));
+            }
+        }
+    }
 };
 
 static_assert(TetStorage<ArrayStorage>);
