@@ -41,6 +41,12 @@ public:
         record(tet_of(b)).n[static_cast<std::size_t>(facet_of(b))] = a;
     }
 
+    /// Records b as the other side of half-facet a, on a's side only: for gluing that visits both
+    /// sides of every face (cavity_gluer.h).
+    void set_adjacent(HalfFacet a, HalfFacet b) {
+        record(tet_of(a)).n[static_cast<std::size_t>(facet_of(a))] = b;
+    }
+
     void end_operation() { recycle_released(); }
 
     /// Starts loading the records of t's neighbours. The cavity search and the walk read them
