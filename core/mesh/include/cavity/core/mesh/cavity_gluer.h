@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "cavity/core/base/error.h"
 #include "cavity/core/mesh/facet_gluer.h"
 #include "cavity/core/mesh/tetrahedron.h"
 
@@ -62,6 +63,11 @@ public:
             for (std::size_t s = 0; s < 4; ++s) {
                 std::uint8_t& l = local[slot(v[s])];
                 if (l == kUnnumbered) {
+                    // Euler's count bounds the numbers for a sphere, which the size check above
+                    // relied on; more would mean a corrupt cavity, never a memory overrun.
+                    if (std::size_t{next} == kMatrixSide) [[unlikely]] {
+                        throw_too_many_vertices();
+                    }
                     l = next++;
                 }
                 number[s] = l;
@@ -86,6 +92,11 @@ public:
 private:
     static constexpr std::size_t kMatrixSide = 64;
     static constexpr std::uint8_t kUnnumbered = 0xFF;
+
+    [[noreturn]] static void throw_too_many_vertices() {
+        throw InternalError(
+            "internal error: a cavity boundary has more vertices than its faces allow");
+    }
 
     static std::size_t apex_slot(const TetVertices& v, VertexId apex) {
         return v[3] == apex ? 3 : v[0] == apex ? 0 : v[1] == apex ? 1 : 2;
