@@ -201,7 +201,6 @@ LiveCdt::Star LiveCdt::make_star(const Cavity& cavity, VertexId u) const {
     // Around u, the face rotated to (u, p, q) meets the one rotated to (u, q, p): the engine's
     // gluer pairs them (by the vertex ids: a star is built once per vertex, off any hot path).
     FacetGluer gluer;
-    gluer.begin(star.tets.size());
     for (std::size_t n = 0; n < star.tets.size(); ++n) {
         const TetVertices& v = star.tets[n];
         const auto a = static_cast<std::size_t>(star.outer[n]);

@@ -1,5 +1,6 @@
 #include "cavity/core/geometry/geometry.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace cavity::core {
@@ -7,7 +8,28 @@ namespace cavity::core {
 Geometry::Geometry(std::vector<Point3> points,
                    std::vector<std::uint32_t> keys,
                    std::vector<double> weights)
-    : points_(std::move(points)), keys_(std::move(keys)), weights_(std::move(weights)) {}
+    : points_(std::move(points)), keys_(std::move(keys)), weights_(std::move(weights)) {
+    if (points_.empty()) {
+        return;
+    }
+    box_lo_ = points_.front();
+    box_hi_ = points_.front();
+    for (const Point3& p : points_) {
+        box_lo_ = {std::min(box_lo_.x, p.x), std::min(box_lo_.y, p.y), std::min(box_lo_.z, p.z)};
+        box_hi_ = {std::max(box_hi_.x, p.x), std::max(box_hi_.y, p.y), std::max(box_hi_.z, p.z)};
+    }
+    insphere_static_ = predicates::InsphereStaticFilter(box_lo_, box_hi_);
+}
+
+void Geometry::widen_box(const Point3& p) {
+    if (points_.size() == 1) {
+        box_lo_ = p;
+        box_hi_ = p;
+    }
+    box_lo_ = {std::min(box_lo_.x, p.x), std::min(box_lo_.y, p.y), std::min(box_lo_.z, p.z)};
+    box_hi_ = {std::max(box_hi_.x, p.x), std::max(box_hi_.y, p.y), std::max(box_hi_.z, p.z)};
+    insphere_static_ = predicates::InsphereStaticFilter(box_lo_, box_hi_);
+}
 
 namespace {
 

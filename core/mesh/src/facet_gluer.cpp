@@ -1,7 +1,5 @@
 #include "cavity/core/mesh/facet_gluer.h"
 
-#include "cavity/core/base/error.h"
-
 namespace cavity::core {
 
 namespace {
@@ -11,15 +9,6 @@ std::uint64_t edge_key(VertexId p, VertexId q) {
 }
 
 }  // namespace
-
-void FacetGluer::begin(std::size_t faces) {
-    use_matrix_ = faces / 2 + 2 <= kMatrixSide;
-    locals_ = 0;
-}
-
-void FacetGluer::throw_too_many_vertices() {
-    throw InternalError("internal error: a cavity boundary has more vertices than its faces allow");
-}
 
 std::size_t FacetGluer::slot(std::uint64_t edge) const {
     std::uint64_t h = edge * 0x9E37'79B9'7F4A'7C15ull;
@@ -67,14 +56,6 @@ HalfFacet FacetGluer::match_hashed(VertexId p, VertexId q, HalfFacet h) {
 }
 
 void FacetGluer::end() {
-    for (std::uint32_t i : local_touched_) {
-        local_table_[i].vertex = kNoVertex;
-    }
-    local_touched_.clear();
-    for (std::uint32_t i : matrix_touched_) {
-        matrix_[i] = kNoHalfFacet;
-    }
-    matrix_touched_.clear();
     for (std::size_t i : table_touched_) {
         table_[i] = Entry{kEmpty, kNoHalfFacet};
     }

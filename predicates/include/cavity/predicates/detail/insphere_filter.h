@@ -30,22 +30,21 @@ inline constexpr double kInsphereErrorBound = 1224.0 * 0x1p-53;
 inline constexpr double kInsphereMinMax = 0x1p-190;
 inline constexpr double kInsphereMaxMax = 0x1p190;
 
-/// +1 or -1 when the sign of det[p-e, |p-e|^2] (p = a..d) is certified, 0 when undecided.
-inline int insphere_filter(
-    const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
-    const double aex = a.x - e.x;
-    const double aey = a.y - e.y;
-    const double aez = a.z - e.z;
-    const double bex = b.x - e.x;
-    const double bey = b.y - e.y;
-    const double bez = b.z - e.z;
-    const double cex = c.x - e.x;
-    const double cey = c.y - e.y;
-    const double cez = c.z - e.z;
-    const double dex = d.x - e.x;
-    const double dey = d.y - e.y;
-    const double dez = d.z - e.z;
-
+/// The insphere determinant det[p-e, |p-e|^2] in plain double arithmetic, from the rounded
+/// differences p-e (Shewchuk's order, above), shared by the semi-static filter below and the
+/// static one (insphere_static_filter.h) so that both bounds describe the same evaluation.
+[[gnu::always_inline]] inline double insphere_determinant(double aex,
+                                                          double aey,
+                                                          double aez,
+                                                          double bex,
+                                                          double bey,
+                                                          double bez,
+                                                          double cex,
+                                                          double cey,
+                                                          double cez,
+                                                          double dex,
+                                                          double dey,
+                                                          double dez) {
     const double ab = aex * bey - bex * aey;
     const double bc = bex * cey - cex * bey;
     const double cd = cex * dey - dex * cey;
@@ -63,7 +62,27 @@ inline int insphere_filter(
     const double clift = cex * cex + cey * cey + cez * cez;
     const double dlift = dex * dex + dey * dey + dez * dez;
 
-    const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+    return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+}
+
+/// +1 or -1 when the sign of det[p-e, |p-e|^2] (p = a..d) is certified, 0 when undecided.
+inline int insphere_filter(
+    const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
+    const double aex = a.x - e.x;
+    const double aey = a.y - e.y;
+    const double aez = a.z - e.z;
+    const double bex = b.x - e.x;
+    const double bey = b.y - e.y;
+    const double bez = b.z - e.z;
+    const double cex = c.x - e.x;
+    const double cey = c.y - e.y;
+    const double cez = c.z - e.z;
+    const double dex = d.x - e.x;
+    const double dey = d.y - e.y;
+    const double dez = d.z - e.z;
+
+    const double det =
+        insphere_determinant(aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez);
 
     const double maxx =
         std::max(std::max(std::abs(aex), std::abs(bex)), std::max(std::abs(cex), std::abs(dex)));

@@ -3,14 +3,15 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
 #include "cavity/core/base/pod_stack.h"
 #include "cavity/core/delaunay/observer.h"
 #include "cavity/core/geometry/geometry.h"
+#include "cavity/core/mesh/cavity_gluer.h"
 #include "cavity/core/mesh/dig_cavity.h"
-#include "cavity/core/mesh/facet_gluer.h"
 #include "cavity/core/mesh/tet_storage.h"
 #include "cavity/core/mesh/tetrahedron.h"
 
@@ -59,11 +60,8 @@ public:
         if constexpr (Storage::kExplicitAdjacency) {
             // Ghost faces pair up around the ghost vertex exactly as new faces pair up around a
             // new vertex.
-            gluer_.begin(ghosts.size());
-            for (TetId g : ghosts) {
-                glue_around(g, kGhostVertex);
-            }
-            gluer_.end();
+            gluer_.reserve(geometry_.size());
+            gluer_.glue(storage_, ghosts, kGhostVertex);
         }
         storage_.end_operation();
     }
@@ -103,14 +101,13 @@ public:
             deleted_stamp_.resize(geometry_.size(), kNoStamp);
             created_stamp_.resize(geometry_.size(), kNoStamp);
         }
+        if constexpr (Storage::kExplicitAdjacency) {
+            gluer_.reserve(geometry_.size());  // a live triangulation's geometry grows
+        }
         Digger digger{*this, u};
         dig_cavity(storage_, t0, stack_, digger);
         if constexpr (Storage::kExplicitAdjacency) {
-            gluer_.begin(created_.size());
-            for (TetId t : created_) {
-                glue_around(t, u);
-            }
-            gluer_.end();
+            gluer_.glue(storage_, std::span<const TetId>(created_.begin(), created_.size()), u);
         }
         if (geometry_.weighted()) {
             collect_vanished(u);
@@ -218,47 +215,6 @@ private:
         }
     }
 
-    /// Glues the faces of new tetrahedron t that pass through vertex apex to their partners.
-    void glue_around(TetId t, VertexId apex) {
-        const TetVertices& v = storage_.vertices(t);
-        const std::size_t a = v[3] == apex ? 3 : v[0] == apex ? 0 : v[1] == apex ? 1 : 2;
-        const auto& edges = kApexFaceEdge[a];
-        if (gluer_.use_matrix()) {
-            std::array<std::uint32_t, 4> local{};
-            for (std::size_t s = 0; s < 4; ++s) {
-                if (s != a) {
-                    local[s] = gluer_.local(v[s]);
-                }
-            }
-            for (std::size_t s = 0; s < 4; ++s) {
-                if (s == a) {
-                    continue;
-                }
-                const HalfFacet h = half_facet(t, static_cast<int>(s));
-                const HalfFacet partner =
-                    gluer_.match_local(local[static_cast<std::size_t>(edges[s][0])],
-                                       local[static_cast<std::size_t>(edges[s][1])],
-                                       h);
-                if (partner != kNoHalfFacet) {
-                    storage_.glue(h, partner);
-                }
-            }
-            return;
-        }
-        for (std::size_t s = 0; s < 4; ++s) {
-            if (s == a) {
-                continue;
-            }
-            const HalfFacet h = half_facet(t, static_cast<int>(s));
-            const HalfFacet partner = gluer_.match_hashed(v[static_cast<std::size_t>(edges[s][0])],
-                                                          v[static_cast<std::size_t>(edges[s][1])],
-                                                          h);
-            if (partner != kNoHalfFacet) {
-                storage_.glue(h, partner);
-            }
-        }
-    }
-
     void stamp(std::vector<std::uint32_t>& stamps, const TetVertices& v) {
         for (VertexId w : v) {
             if (w != kGhostVertex) {
@@ -295,7 +251,7 @@ private:
     PodStack<CavityFace> cavity_faces_;
     std::vector<std::uint32_t> deleted_stamp_;
     std::vector<std::uint32_t> created_stamp_;
-    FacetGluer gluer_;
+    CavityGluer gluer_;
 };
 
 }  // namespace cavity::core

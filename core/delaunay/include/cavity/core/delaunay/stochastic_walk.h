@@ -39,6 +39,8 @@ TetId stochastic_walk(
     int entered = -1;
     for (;;) {
         const TetVertices& v = storage.vertices(t);
+        // The walk continues into one of them; their loads overlap with t's orientation tests.
+        storage.prefetch_neighbours(t);
         if (stop(t, v)) {
             return t;
         }

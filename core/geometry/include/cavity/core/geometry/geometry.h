@@ -8,6 +8,7 @@
 #include "cavity/perturbation/outer_halfspace.h"
 #include "cavity/perturbation/sos.h"
 #include "cavity/predicates/insphere.h"
+#include "cavity/predicates/insphere_static_filter.h"
 #include "cavity/predicates/orient3d.h"
 #include "cavity/predicates/point.h"
 
@@ -39,6 +40,7 @@ public:
     /// live CDT receiving a vertex). Returns its vertex id.
     VertexId append_point(const Point3& p) {
         points_.push_back(p);
+        widen_box(p);
         keys_.push_back(static_cast<std::uint32_t>(keys_.size()));
         return static_cast<VertexId>(points_.size() - 1);
     }
@@ -47,6 +49,7 @@ public:
     /// the geometry is weighted, weight `weight`. Returns its vertex id.
     VertexId append(const Point3& p, std::uint32_t key, double weight) {
         points_.push_back(p);
+        widen_box(p);
         keys_.push_back(key);
         if (weighted()) {
             weights_.push_back(weight);
@@ -98,6 +101,13 @@ public:
     [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t, VertexId u, T& tally) const {
         if constexpr (!T::kCounting) {
             if (!weighted()) {
+                // The static filter first: most tests of a well-spread point set are decided by
+                // one comparison with the bounding box's bound. It runs only uncounted, so the
+                // counters' stages stay those of the predicates themselves.
+                if (const int s = insphere_static_.sign(
+                        point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u))) {
+                    return s > 0;
+                }
                 const Sign exact = predicates::insphere(
                     point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
                 // On an exact tie go straight to the tie-break: the exact determinant is already
@@ -146,9 +156,16 @@ private:
     template <Tally T>
     bool conflicts_solid_exactly(const TetVertices& t, VertexId u, T& tally) const;
 
+    /// Grows the bounding box to hold p and remakes the static filter for it (the filter is sound
+    /// only for points in its box).
+    void widen_box(const Point3& p);
+
     std::vector<Point3> points_;
     std::vector<std::uint32_t> keys_;
     std::vector<double> weights_;
+    Point3 box_lo_{};  // bounding box of points_, when there are any
+    Point3 box_hi_{};
+    predicates::InsphereStaticFilter insphere_static_;  // for points in that box
 };
 
 }  // namespace cavity::core

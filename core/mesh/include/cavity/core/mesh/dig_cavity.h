@@ -40,6 +40,7 @@ requires DigRules<Rules>
                                               PodStack<HalfFacet>& stack,
                                               Rules& rules) {
     rules.take(t0);
+    storage.prefetch_neighbours(t0);
     for (int f = 0; f < 4; ++f) {
         stack.push_back(half_facet(t0, f));
     }
@@ -58,6 +59,9 @@ requires DigRules<Rules>
         const TetId far = tet_of(across);
         if (!blocked && rules.conflicts(far)) {
             rules.take(far);
+            // Its other three neighbours are tested next, or after the faces above them on the
+            // stack: start their loads now.
+            storage.prefetch_neighbours(far);
             for (int g = 0; g < 4; ++g) {
                 if (g != facet_of(across)) {
                     stack.push_back(half_facet(far, g));

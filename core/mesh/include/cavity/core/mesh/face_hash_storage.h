@@ -36,6 +36,9 @@ public:
 
     void end_operation() { recycle_released(); }
 
+    /// Nothing to prefetch: a neighbour is found by a hash look-up, not read from t's record.
+    void prefetch_neighbours(TetId) const {}
+
     std::size_t bytes() const;
 
     /// Probes made by look-ups so far (a measure of the table's cost).

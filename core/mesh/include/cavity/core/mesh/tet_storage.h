@@ -28,6 +28,7 @@ concept TetStorage = requires(S store,
     store.end_operation();
     { view.vertices(t) } -> std::same_as<const TetVertices&>;
     { view.adjacent(t, 0) } -> std::same_as<HalfFacet>;
+    view.prefetch_neighbours(t);  // a memory hint ahead of reading t's neighbours
     { view.alive(t) } -> std::same_as<bool>;
     { view.tet_at_vertex(v) } -> std::same_as<TetId>;
     { view.capacity() } -> std::convertible_to<std::size_t>;
