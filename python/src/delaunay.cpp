@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <ctime>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -172,48 +173,60 @@ public:
         timings["triangulate_cpu_s"] = b.triangulate_s.second;
         timings["adjacency_cpu_s"] = b.adjacency_s.second;
         stats_["timings"] = timings;
-        publish(std::move(b.adjacency), std::move(b.triangulation));
+        publish(std::move(b.adjacency), std::move(b.triangulation), 0);
     }
 
     /// Inserts the rows of `points` (and `weights`) into the live triangulation along the
     /// construction's insertion order; their perturbation keys are their rows in the concatenated
     /// input, so the result is the triangulation of all points so far, whatever the batches.
     void add_points(const py::handle& points, const py::handle& weights) {
-        if (!live_) {
-            throw py::value_error(
-                "add_points needs a triangulation made with incremental=True and not closed");
-        }
-        if (weights.is_none() == input_.weighted()) {
-            throw py::value_error(input_.weighted()
-                                      ? "this triangulation is weighted: add_points needs weights"
-                                      : "this triangulation is unweighted: add_points takes no "
-                                        "weights");
-        }
         const core::PointSet batch = to_point_set(points, weights);
-        if (input_.size() + batch.size() >
-            static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
-            throw py::value_error("more than 2^31-1 points cannot be numbered by int32 indices");
-        }
         core::Adjacency adjacency;
         core::Triangulation t;
+        const char* refusal = nullptr;
+        std::uint64_t edit = 0;
         {
             py::gil_scoped_release nogil;
-            const core::InsertionOrder order =
-                core::make_insertion_order(batch.points, order_options_);
-            live_->insert(batch, order.sequence);
-            adjacency = live_->adjacency();
-            read_live(*live_, adjacency, t);
+            const std::lock_guard<std::mutex> lock(mutex_);
+            if (!live_) {
+                refusal =
+                    "add_points needs a triangulation made with incremental=True and not closed";
+            } else if (batch.weighted() != input_.weighted()) {
+                refusal = input_.weighted()
+                              ? "this triangulation is weighted: add_points needs weights"
+                              : "this triangulation is unweighted: add_points takes no weights";
+            } else if (input_.size() + batch.size() >
+                       static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
+                refusal = "more than 2^31-1 points cannot be numbered by int32 indices";
+            } else {
+                const core::InsertionOrder order =
+                    core::make_insertion_order(batch.points, order_options_);
+                live_->insert(batch, order.sequence);
+                adjacency = live_->adjacency();
+                read_live(*live_, adjacency, t);
+                input_.points.insert(input_.points.end(), batch.points.begin(), batch.points.end());
+                input_.weights.insert(
+                    input_.weights.end(), batch.weights.begin(), batch.weights.end());
+                edit = ++edits_;
+            }
         }
-        input_.points.insert(input_.points.end(), batch.points.begin(), batch.points.end());
-        input_.weights.insert(input_.weights.end(), batch.weights.begin(), batch.weights.end());
+        if (refusal != nullptr) {
+            throw py::value_error(refusal);
+        }
         stats_["points_added"] = stats_["points_added"].cast<std::size_t>() + batch.size();
-        publish(std::move(adjacency), std::move(t));
+        publish(std::move(adjacency), std::move(t), edit);
     }
 
     /// Ends incremental mode: the live triangulation is freed; the arrays stay.
-    void close() { live_.reset(); }
+    void close() {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        live_.reset();
+    }
 
-    bool incremental() const { return live_.has_value(); }
+    bool incremental() const {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        return live_.has_value();
+    }
 
     /// For each row of the (k, 3) `xi`, the lowest-numbered simplex whose closure holds it, or
     /// -1 (outside the hull, or a NaN coordinate). The queries are walked to along a Hilbert
@@ -226,8 +239,10 @@ public:
         }
         const auto k = static_cast<std::size_t>(q.shape(0));
         std::vector<std::int32_t> found(k, -1);
+        const Arrays a = arrays();
         {
             py::gil_scoped_release nogil;
+            const std::lock_guard<std::mutex> lock(mutex_);
             std::vector<core::Point3> finite;
             std::vector<std::size_t> row;
             const double* x = q.data();
@@ -241,7 +256,7 @@ public:
             core::OrderOptions curve;
             curve.kind = core::OrderKind::kHilbert;
             const core::InsertionOrder order = core::make_insertion_order(finite, curve);
-            const core::SimplexLocator locator(input_.points, simplices(), neighbors());
+            const core::SimplexLocator locator(input_.points, a.simplices(), a.neighbors());
             std::int32_t start = 0;
             for (std::uint32_t j : order.sequence) {
                 const std::int32_t t = locator.find(finite[j], start);
@@ -255,29 +270,35 @@ public:
     /// scipy's transform, (m, 4, 3) float64.
     py::array_t<double> transform() const {
         std::vector<double> values;
+        const Arrays a = arrays();
         {
             py::gil_scoped_release nogil;
-            values = barycentric_transforms(input_.points, simplices());
+            const std::lock_guard<std::mutex> lock(mutex_);
+            values = barycentric_transforms(input_.points, a.simplices());
         }
-        return adopt<double>(std::move(values), {simplices_.shape(0), 4, 3});
+        return adopt<double>(std::move(values), {a.simplex.shape(0), 4, 3});
     }
 
     /// scipy's equations for the lifting z = scale |x|^2 + shift, (m, 5) float64.
     py::array_t<double> equations(double scale, double shift) const {
         std::vector<double> values;
+        const Arrays a = arrays();
         {
             py::gil_scoped_release nogil;
-            values = lifted_hyperplanes(input_.points, simplices(), scale, shift);
+            const std::lock_guard<std::mutex> lock(mutex_);
+            values = lifted_hyperplanes(input_.points, a.simplices(), scale, shift);
         }
-        return adopt<double>(std::move(values), {simplices_.shape(0), 5});
+        return adopt<double>(std::move(values), {a.simplex.shape(0), 5});
     }
 
     /// scipy's (indptr, indices).
     py::tuple vertex_neighbor_vertices() const {
         core::VertexNeighbors vn;
+        const Arrays a = arrays();
         {
             py::gil_scoped_release nogil;
-            vn = core::vertex_neighbors(simplices(), input_.size());
+            const std::lock_guard<std::mutex> lock(mutex_);
+            vn = core::vertex_neighbors(a.simplices(), input_.size());
         }
         const auto n = static_cast<py::ssize_t>(vn.indptr.size());
         const auto e = static_cast<py::ssize_t>(vn.indices.size());
@@ -287,9 +308,11 @@ public:
     /// Runs the exact validator (core::validate) on this triangulation.
     bool check() const {
         core::ValidationReport report;
+        const Arrays a = arrays();
         {
             py::gil_scoped_release nogil;
-            report = core::validate(input_, simplices());
+            const std::lock_guard<std::mutex> lock(mutex_);
+            report = core::validate(input_, a.simplices());
         }
         if (report.ok()) {
             return true;
@@ -312,16 +335,32 @@ public:
     py::dict stats_;
 
 private:
-    std::span<const core::Tet> simplices() const {
-        return {reinterpret_cast<const core::Tet*>(simplices_.data()),
-                static_cast<std::size_t>(simplices_.shape(0))};
-    }
+    /// References to the published arrays, taken with the GIL: work without the GIL reads these,
+    /// which stay alive while another thread's add_points publishes new ones.
+    struct Arrays {
+        py::array_t<std::int32_t> simplex;
+        py::array_t<std::int32_t> neighbor;
 
-    std::span<const std::int32_t> neighbors() const {
-        return {neighbors_.data(), static_cast<std::size_t>(neighbors_.size())};
-    }
+        std::span<const core::Tet> simplices() const {
+            return {reinterpret_cast<const core::Tet*>(simplex.data()),
+                    static_cast<std::size_t>(simplex.shape(0))};
+        }
 
-    void publish(core::Adjacency&& adjacency, core::Triangulation&& t) {
+        std::span<const std::int32_t> neighbors() const {
+            return {neighbor.data(), static_cast<std::size_t>(neighbor.size())};
+        }
+    };
+
+    Arrays arrays() const { return {simplices_, neighbors_}; }
+
+    /// Called with the GIL, after construction (edit 0) or the insertion that made edit `edit`.
+    /// Threads take the GIL back in any order: arrays older than the ones shown are dropped.
+    void publish(core::Adjacency&& adjacency, core::Triangulation&& t, std::uint64_t edit) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (edit < shown_) {
+            return;
+        }
+        shown_ = edit;
         const auto n = static_cast<py::ssize_t>(input_.size());
         py::array_t<double> points({n, py::ssize_t{3}});
         auto* p = points.mutable_data();
@@ -358,6 +397,11 @@ private:
         redundant_ = adopt(std::move(t.redundant), {red});
     }
 
+    /// Guards input_ and live_ against two Python threads using one object, taken only without
+    /// the GIL or by a holder of the GIL that waits for nothing else (no deadlock).
+    mutable std::mutex mutex_;
+    std::uint64_t edits_ = 0;  ///< insertions made
+    std::uint64_t shown_ = 0;  ///< the insertion the published arrays show
     core::PointSet input_;
     core::OrderOptions order_options_;  ///< also orders the batches of add_points
     std::optional<core::DelaunayTriangulation> live_;

@@ -127,3 +127,44 @@ def test_vtk_itself_finds_every_cell_positive():
     # The filter's volume is signed: the same cells with two vertices swapped are all negative.
     swapped = cells.reshape(-1, 5)[:, [0, 2, 1, 3, 4]].ravel()
     assert (vtk_volumes(swapped, celltypes, points) < 0).all()
+
+
+def test_one_object_shared_by_threads_stays_consistent():
+    """add_points from two threads at once, and queries meanwhile: the insertions are serialised,
+    the arrays a query reads stay alive while newer ones are published, and the end state is the
+    triangulation of every point, as one construction of the final points would give."""
+    rng = np.random.default_rng(7)
+    d = cavity.Delaunay(rng.random((2000, 3)), incremental=True)
+    batches = [rng.random((3000, 3)) for _ in range(6)]
+    queries = rng.random((5000, 3))
+    errors = []
+
+    def insert(mine):
+        try:
+            for b in mine:
+                d.add_points(b)
+        except Exception as e:  # reported below: a thread's exception is otherwise lost
+            errors.append(e)
+
+    def query():
+        try:
+            for _ in range(20):
+                found = d.find_simplex(queries)
+                assert (found >= -1).all() and (found >= 0).mean() > 0.9  # the hull grows
+                d.vertex_neighbor_vertices
+        except Exception as e:
+            errors.append(e)
+
+    threads = [threading.Thread(target=insert, args=(batches[0::2],)),
+               threading.Thread(target=insert, args=(batches[1::2],)),
+               threading.Thread(target=query)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert not errors
+    assert d.npoints == 2000 + 6 * 3000
+    whole = cavity.Delaunay(np.asarray(d.points))
+    assert np.array_equal(np.sort(np.sort(d.simplices, axis=1), axis=0),
+                          np.sort(np.sort(whole.simplices, axis=1), axis=0))
+    assert d.check()
