@@ -2,6 +2,8 @@
 
 #include <array>
 #include <cstdint>
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -54,6 +56,31 @@ inline std::vector<core::Point3> dyadic_grid_points(std::size_t n, std::uint64_t
                        static_cast<double>(1 + random.below(63)) / 16});
     }
     return pts;
+}
+
+/// A .poly file's text: the cube [0,4]^3 holding the cube [1,3]^3 (points 0-7 and 8-15; the 6
+/// squares of each, markers 1 and 9), then `tail`, the hole and region lists. The hole list's
+/// first point is on line 44.
+inline std::string nested_cubes_poly(const std::string& tail) {
+    std::ostringstream poly;
+    poly << "16 3 0 0\n";
+    for (int i = 0; i < 16; ++i) {
+        const int s = i < 8 ? 4 : 2;
+        const int o = i < 8 ? 0 : 1;
+        poly << i << ' ' << o + (i & 1) * s << ' ' << o + ((i >> 1) & 1) * s << ' '
+             << o + ((i >> 2) & 1) * s << '\n';
+    }
+    const int squares[6][4] = {
+        {0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
+    poly << "12 1\n";
+    for (int offset : {0, 8}) {
+        for (const auto& q : squares) {
+            poly << "1 0 " << offset + 1 << "\n4 " << q[0] + offset << ' ' << q[1] + offset << ' '
+                 << q[2] + offset << ' ' << q[3] + offset << '\n';
+        }
+    }
+    poly << tail;
+    return poly.str();
 }
 
 }  // namespace cavity::test

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -15,6 +14,7 @@
 #include "cavity/core/cdt/cdt_validate.h"
 #include "cavity/core/cdt/read_poly.h"
 #include "cavity/predicates/orient3d.h"
+#include "plc_builders.h"
 
 namespace cavity::core {
 namespace {
@@ -70,33 +70,9 @@ Plc l_prism() {
     return plc;
 }
 
-/// A .poly of the cube [0,4]^3 holding the cube [1,3]^3 (both surfaces), then `tail`: the hole
-/// and region lists. The hole list's first point is on line 44.
-std::string nested_cubes(const std::string& tail) {
-    std::ostringstream poly;
-    poly << "16 3 0 0\n";
-    for (int i = 0; i < 16; ++i) {
-        const int s = i < 8 ? 4 : 2;
-        const int o = i < 8 ? 0 : 1;
-        poly << i << ' ' << o + (i & 1) * s << ' ' << o + ((i >> 1) & 1) * s << ' '
-             << o + ((i >> 2) & 1) * s << '\n';
-    }
-    const int squares[6][4] = {
-        {0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
-    poly << "12 1\n";
-    for (int offset : {0, 8}) {
-        for (const auto& s : squares) {
-            poly << "1 0 " << offset + 1 << "\n4 " << s[0] + offset << ' ' << s[1] + offset << ' '
-                 << s[2] + offset << ' ' << s[3] + offset << '\n';
-        }
-    }
-    poly << tail;
-    return poly.str();
-}
-
 Cdt nested_cdt(const std::string& name, const std::string& tail) {
     const auto path = std::filesystem::temp_directory_path() / ("cavity_carve_" + name);
-    std::ofstream(path) << nested_cubes(tail);
+    std::ofstream(path) << test::nested_cubes_poly(tail);
     return build_cdt(read_poly(path), CdtOptions{true});
 }
 

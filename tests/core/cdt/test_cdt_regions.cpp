@@ -3,7 +3,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -13,34 +12,14 @@
 #include "cavity/core/cdt/cdt_regions.h"
 #include "cavity/core/cdt/read_poly.h"
 #include "cavity/core/io/write_poly.h"
+#include "plc_builders.h"
 
 namespace cavity::core {
 namespace {
 
-/// A cube [0,4]^3 holding the cube [1,3]^3: the hull's 6 squares and the inner cube's 6, then the
-/// region list (inner marker 7, outer marker 3) given by the caller.
+/// The nested cubes (plc_builders.h) with no hole and the region list `regions`.
 std::string nested_cubes(const std::string& regions) {
-    std::ostringstream poly;
-    poly << "16 3 0 0\n";
-    for (int i = 0; i < 8; ++i) {
-        poly << i << ' ' << (i & 1) * 4 << ' ' << ((i >> 1) & 1) * 4 << ' ' << ((i >> 2) & 1) * 4
-             << '\n';
-    }
-    for (int i = 0; i < 8; ++i) {
-        poly << i + 8 << ' ' << 1 + (i & 1) * 2 << ' ' << 1 + ((i >> 1) & 1) * 2 << ' '
-             << 1 + ((i >> 2) & 1) * 2 << '\n';
-    }
-    const int squares[6][4] = {
-        {0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
-    poly << "12 1\n";
-    for (int offset : {0, 8}) {
-        for (const auto& s : squares) {
-            poly << "1 0 " << offset + 1 << "\n4 " << s[0] + offset << ' ' << s[1] + offset << ' '
-                 << s[2] + offset << ' ' << s[3] + offset << '\n';
-        }
-    }
-    poly << "0\n" << regions;
-    return poly.str();
+    return test::nested_cubes_poly("0\n" + regions);
 }
 
 std::filesystem::path write_temp(const std::string& name, const std::string& text) {
