@@ -39,6 +39,7 @@ struct TriangulateArgs {
     std::string stats;
     std::vector<std::uint64_t> delete_ids;
     std::uint64_t seed = 0;
+    unsigned threads = 0;  ///< 0: the sequential engine
     double brio_ratio = 0.5;
     bool no_reverse_rounds = false;
     bool weighted = false;
@@ -116,7 +117,12 @@ void write_stats(core::AtomicFileGroup& files,
     // --stats runs the instrumented engine (about 10 % slower than the plain one a run without
     // --stats uses), with the exact conflict counter on top for --count-conflicts: timings from
     // here are that engine's.
-    json.string("engine", args.count_conflicts ? "counting+conflict-counter" : "counting");
+    // --threads runs the parallel construction, which has no counters.
+    json.string("engine",
+                args.threads > 0       ? "parallel, " + std::to_string(args.threads) + " threads"
+                : args.count_conflicts ? "counting+conflict-counter"
+                                       : "counting");
+    json.integer("threads", args.threads);
     json.number("read_s", timings.read_s);
     json.number("order_s", timings.order_s);
     json.number("triangulate_s", timings.triangulate_s);
@@ -130,7 +136,9 @@ void write_stats(core::AtomicFileGroup& files,
     json.integer("duplicates", tri.duplicates.size());
     json.integer("redundant", tri.redundant.size());
     json.end_object();
-    write_counters(json, tri.counters, args.conflicts_counted());
+    if (args.threads == 0) {
+        write_counters(json, tri.counters, args.conflicts_counted());
+    }
     json.integer("storage_bytes", tri.storage_bytes);
     json.integer("peak_rss_bytes", peak_rss_bytes());
     json.begin_array("duplicates");
@@ -231,7 +239,8 @@ void run_triangulate(const TriangulateArgs& args) {
     options.storage = core::parse_storage_kind(args.storage);
     options.seed = args.seed;
     options.bootstrap = core::parse_bootstrap_rule(args.bootstrap);
-    options.count = !args.stats.empty() || args.conflicts_counted();
+    options.count = (!args.stats.empty() && args.threads == 0) || args.conflicts_counted();
+    options.threads = args.threads;
     options.count_conflicts = args.count_conflicts;
     ProgressBar bar("triangulating", !args.quiet);
     options.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
@@ -426,6 +435,12 @@ void add_triangulate_command(CLI::App& app) {
            "so check it with `cavity check --deleted` and the same list")
         ->delimiter(',')
         ->transform(integer_in("a --delete point", 0, 0xFFFF'FFFFu));
+    cmd->add_option("--threads",
+                    args->threads,
+                    "build with N threads (1 to 127): the same tetrahedra, written in a canonical "
+                    "order that is the same for every N; the plain engine, so --stats has timings "
+                    "and counts but no counters (default: the sequential engine)")
+        ->transform(integer_in("--threads", 1, 127));
     cmd->add_flag("--check", args->check, "validate the result exactly before writing it");
     cmd->add_flag("--count-conflicts",
                   args->count_conflicts,
@@ -459,6 +474,12 @@ void add_triangulate_command(CLI::App& app) {
             throw CLI::ValidationError("--storage",
                                        "--delete, --neigh and --faces use the live triangulation, "
                                        "which keeps the array storage");
+        }
+        if (args->threads > 0 &&
+            (args->locate != "walk" || args->storage != "array" || args->count_conflicts)) {
+            throw CLI::ValidationError("--threads",
+                                       "the parallel construction uses --locate walk and "
+                                       "--storage array, and counts no conflicts");
         }
         if (args->format != "vtu" && args->ascii) {
             throw CLI::ValidationError("--ascii", "only with --format vtu");

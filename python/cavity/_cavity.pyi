@@ -17,8 +17,8 @@ def orient4d(a: npt.ArrayLike, b: npt.ArrayLike, c: npt.ArrayLike, d: npt.ArrayL
 
 class Triangulation:
     def __init__(self, points: npt.ArrayLike, weights: Optional[npt.ArrayLike], order: str,
-                 locate: str, seed: int, storage: str, count: bool, incremental: bool,
-                 progress: Optional[Callable[[int, int], Any]]) -> None: ...
+                 locate: str, seed: int, storage: str, count: bool, threads: int,
+                 incremental: bool, progress: Optional[Callable[[int, int], Any]]) -> None: ...
     @property
     def points(self) -> npt.NDArray[np.float64]: ...
     @property

@@ -72,6 +72,10 @@ class Delaunay:
         Array storage, or the book's face hash table (not with ``incremental``).
     count : bool, optional
         Run the instrumented engine and put its counters in ``stats`` (about 10% slower).
+    threads : int, optional
+        0 (default): the sequential engine. N >= 1: the parallel construction on N threads (walk
+        and array storage only, no ``count``). The simplices are the same as the sequential
+        engine's, in a canonical order that is the same for every N.
     progress : callable, optional
         ``progress(done, total)``, called now and then during construction.
 
@@ -150,13 +154,13 @@ class Delaunay:
     def __init__(self, points: Any, furthest_site: bool = False, incremental: bool = False,
                  qhull_options: Optional[str] = None, *, weights: Any = None,
                  order: str = "brio", locate: str = "walk", seed: int = 0,
-                 storage: str = "array", count: bool = False,
+                 storage: str = "array", count: bool = False, threads: int = 0,
                  progress: Optional[Callable[[int, int], Any]] = None) -> None:
         _refuse_unsupported(points, furthest_site, qhull_options)
         self._options: dict[str, Any] = dict(order=order, locate=locate, seed=seed,
-                                             storage=storage, count=count)
+                                             storage=storage, count=count, threads=threads)
         self._engine = _cavity.Triangulation(points, weights, order, locate, seed, storage, count,
-                                             incremental, progress)
+                                             threads, incremental, progress)
         self._batches = [len(self._engine.points)]
         self._derived: dict[str, Any] = {}
 

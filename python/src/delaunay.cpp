@@ -124,6 +124,7 @@ public:
                   std::uint64_t seed,
                   const std::string& storage,
                   bool count,
+                  unsigned threads,
                   bool incremental,
                   const py::object& progress)
         : input_(to_point_set(points, weights)) {
@@ -134,6 +135,11 @@ public:
         options.storage = core::parse_storage_kind(storage);
         options.count = count;
         options.seed = seed;
+        options.threads = threads;
+        if (threads > 127) {
+            throw py::value_error("threads must be between 0 and 127, not " +
+                                  std::to_string(threads));
+        }
         if (incremental && options.storage != core::StorageKind::kArray) {
             throw py::value_error(
                 "incremental=True needs storage=\"array\": the face hash table is not kept live");
@@ -160,7 +166,8 @@ public:
         live_ = std::move(b.live);
         // The plain engine counts nothing: no zeros that would read as measurements.
         stats_ = count ? counters_dict(b.triangulation.counters) : py::dict();
-        stats_["engine"] = count ? "counting" : "plain";
+        stats_["engine"] = count ? "counting" : threads > 0 ? "parallel" : "plain";
+        stats_["threads"] = threads;
         stats_["order"] = order;
         stats_["locate"] = locate;
         stats_["storage"] = storage;
@@ -421,6 +428,7 @@ its arrays, and the operations that need the engine.
                       std::uint64_t,
                       const std::string&,
                       bool,
+                      unsigned,
                       bool,
                       const py::object&>(),
              py::arg("points"),
@@ -430,6 +438,7 @@ its arrays, and the operations that need the engine.
              py::arg("seed"),
              py::arg("storage"),
              py::arg("count"),
+             py::arg("threads"),
              py::arg("incremental"),
              py::arg("progress"))
         .def_readonly("points", &Triangulation::points_)

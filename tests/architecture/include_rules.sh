@@ -17,7 +17,8 @@ declare -A allowed=(
   [delaunay]="base input mesh geometry check io predicates perturbation"
   [check]="base input mesh geometry io predicates perturbation"
   [edit]="base input mesh geometry delaunay check predicates perturbation"
-  [live]="base input mesh geometry delaunay check edit io predicates perturbation"
+  [parallel]="base input mesh geometry delaunay predicates perturbation"
+  [live]="base input mesh geometry delaunay check edit io parallel predicates perturbation"
   [cdt]="base input mesh geometry delaunay check edit live io predicates perturbation boost gmp"
 )
 

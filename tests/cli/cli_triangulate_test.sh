@@ -292,6 +292,34 @@ grep -q '"bootstrap": "first"' boot.json || fail "bootstrap: not in the stats"
 "$cavity" triangulate conf.node -o boot --bootstrap best --quiet 2>/dev/null
 [ $? -eq 2 ] || fail "bootstrap: an unknown rule is not a usage error"
 
+# --threads N: the same files, byte for byte, for every N (the canonical order), the same
+# tetrahedra as the sequential engine, valid; options it cannot honour are usage errors.
+"$cavity" generate cube 30000 -o par.node --seed 4 >/dev/null
+"$cavity" triangulate par.node -o par_seq --quiet || fail "threads: the sequential run failed"
+for n in 1 2 4; do
+  "$cavity" triangulate par.node -o "par_$n" --threads "$n" --neigh --check --quiet \
+    --stats "par_$n.json" || fail "threads $n: failed"
+done
+for n in 2 4; do
+  cmp -s par_1.ele "par_$n.ele" || fail "threads $n: .ele differs from --threads 1"
+  cmp -s par_1.neigh "par_$n.neigh" || fail "threads $n: .neigh differs from --threads 1"
+done
+# Each tetrahedron's vertices in increasing order (a 4-element sorting network), then the lines.
+sorted_tets() {
+  awk 'NR > 1 && !/^#/ { a = $2; b = $3; c = $4; d = $5
+    if (a > b) { t = a; a = b; b = t }; if (c > d) { t = c; c = d; d = t }
+    if (a > c) { t = a; a = c; c = t }; if (b > d) { t = b; b = d; d = t }
+    if (b > c) { t = b; b = c; c = t }; print a, b, c, d }' "$1" | sort
+}
+[ "$(sorted_tets par_seq.ele | md5sum)" = "$(sorted_tets par_2.ele | md5sum)" ] ||
+  fail "threads: tetrahedra differ from the sequential engine's"
+grep -q '"engine": "parallel, 2 threads"' par_2.json || fail "threads: --stats does not name the engine"
+grep -q '"walk_steps"' par_2.json && fail "threads: --stats has counters the parallel engine lacks"
+"$cavity" triangulate par.node -o par_bad --threads 2 --locate conflict-graph --quiet 2>/dev/null
+[ $? -eq 2 ] || fail "threads: --locate conflict-graph is not a usage error"
+"$cavity" triangulate par.node -o par_bad --threads 0 --quiet 2>/dev/null
+[ $? -eq 2 ] || fail "threads: 0 threads is not a usage error"
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures failure(s)"
   exit 1

@@ -14,6 +14,7 @@
 #include "cavity/core/geometry/bootstrap.h"
 #include "cavity/core/geometry/duplicates.h"
 #include "cavity/core/mesh/star.h"
+#include "cavity/core/parallel/parallel_build.h"
 
 namespace cavity::core {
 
@@ -48,12 +49,44 @@ DelaunayTriangulation::DelaunayTriangulation(DelaunayTriangulation&&) noexcept =
 DelaunayTriangulation& DelaunayTriangulation::operator=(DelaunayTriangulation&&) noexcept = default;
 DelaunayTriangulation::~DelaunayTriangulation() = default;
 
-void DelaunayTriangulation::require_array(const TriangulateOptions& options) {
+void DelaunayTriangulation::require_supported(const TriangulateOptions& options, bool counting) {
     if (options.storage != StorageKind::kArray) {
-        throw Error(
-            "the live triangulation keeps the array storage (the hash storage is for "
-            "triangulate())");
+        throw Error(options.threads > 0
+                        ? "the parallel construction uses the array storage, not the hash storage"
+                        : "the live triangulation keeps the array storage (the hash storage is for "
+                          "triangulate())");
     }
+    if (options.threads == 0) {
+        return;
+    }
+    if (counting) {
+        throw Error(
+            "the parallel construction runs the plain engine: its counters are defined for one "
+            "insertion order (run without threads to count)");
+    }
+    if (options.locate != LocateKind::kWalk) {
+        throw Error("the parallel construction locates points by the walk only");
+    }
+    if (options.prefix != 0) {
+        throw Error("the parallel construction inserts every point (no prefix)");
+    }
+}
+
+detail::RunEnd DelaunayTriangulation::build_in_threads(const TriangulateOptions& options,
+                                                       Triangulation& built) {
+    State& s = *state_;
+    ParallelOptions parallel;
+    parallel.threads = options.threads;
+    parallel.seed = options.seed;
+    ParallelBuild build = build_in_parallel(s.geometry, parallel, s.storage);
+    for (VertexId v : build.redundant) {
+        built.redundant.push_back(s.geometry.key(v));
+    }
+    std::sort(built.redundant.begin(), built.redundant.end());
+    if (options.progress) {
+        options.progress(s.geometry.size(), s.geometry.size());
+    }
+    return {build.interior, build.last_solid};
 }
 
 void DelaunayTriangulation::adopt(const detail::RunEnd& end, Triangulation& built) {

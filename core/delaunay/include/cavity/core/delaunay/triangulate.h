@@ -62,6 +62,11 @@ struct TriangulateOptions {
     /// the first insertions (their circumballs hold about n/i points), so more seeds of the
     /// prefix narrow Theorem 5.4's interval where full runs are too costly (experiments' prefix).
     std::size_t prefix = 0;
+    /// 0: the sequential engine. N >= 1: the parallel construction on N threads
+    /// (parallel/parallel_build.h): the plain engine (no counters), the visibility walk and the
+    /// array storage only; the same tetrahedra as the sequential engine, stored in a canonical
+    /// order that is the same for every N.
+    unsigned threads = 0;
     /// Called now and then with (points processed, total); may be empty.
     std::function<void(std::size_t, std::size_t)> progress;
 };

@@ -38,7 +38,8 @@ public:
     /// Triangulates `points` in the order `sequence` exactly as triangulate() does (same checks,
     /// same errors, same tetrahedra), and keeps the result live. options.storage must be kArray
     /// (the hash storage is for the batch triangulate()); with options.prefix only the first
-    /// points are vertices.
+    /// points are vertices. With options.threads, the parallel construction builds it
+    /// (parallel/parallel_build.h): the same tetrahedra, in a canonical order.
     DelaunayTriangulation(const PointSet& points,
                           std::span<const std::uint32_t> sequence,
                           const TriangulateOptions& options);
@@ -155,7 +156,11 @@ private:
     };
 
     void adopt(const detail::RunEnd& end, Triangulation& built);
-    static void require_array(const TriangulateOptions& options);
+    /// \throws Error for options the live triangulation cannot build with: the hash storage, or
+    /// threads with counters (`counting`), a locator other than the walk, or a prefix.
+    static void require_supported(const TriangulateOptions& options, bool counting);
+    /// The parallel construction (options.threads) into the state's storage.
+    detail::RunEnd build_in_threads(const TriangulateOptions& options, Triangulation& built);
     static BowyerWatson<ArrayStorage, NullObserver>& engine(State& s);
     /// A live solid tetrahedron: the last one created when it still is.
     TetId start_tet() const;
@@ -174,12 +179,14 @@ DelaunayTriangulation::DelaunayTriangulation(const PointSet& points,
                                              std::span<const std::uint32_t> sequence,
                                              const TriangulateOptions& options,
                                              Observer& observer) {
-    require_array(options);
+    require_supported(options, Observer::kCounting);
     Triangulation built;
     detail::Prepared prep = detail::prepare(points, sequence, options.bootstrap, built);
     state_ = std::make_unique<State>(std::move(prep.geometry), points, options.seed);
     const detail::RunEnd end =
-        detail::run_located(state_->geometry, options, state_->storage, observer, built);
+        options.threads > 0
+            ? build_in_threads(options, built)
+            : detail::run_located(state_->geometry, options, state_->storage, observer, built);
     adopt(end, built);
 }
 

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <span>
 
+#include "cavity/core/base/error.h"
 #include "cavity/core/delaunay/insertion_driver.h"
 #include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/live/delaunay_triangulation.h"
@@ -36,6 +37,9 @@ Triangulation triangulate_observed(const PointSet& points,
                                    Observer& observer) {
     if (options.storage == StorageKind::kArray) {
         return DelaunayTriangulation(points, sequence, options, observer).release();
+    }
+    if (options.threads > 0) {
+        throw Error("the parallel construction uses the array storage, not the hash storage");
     }
     Triangulation out;
     const detail::Prepared prep = detail::prepare(points, sequence, options.bootstrap, out);

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "cavity/core/base/page_releaser.h"
@@ -100,6 +101,32 @@ public:
             moved[to] = vertex_tet_[v];
         }
         vertex_tet_ = std::move(moved);
+    }
+
+    /// Replaces the contents with `records`, every one live, in that order (slot t is
+    /// records[t]), and makes room for vertex ids below `vertices`: how a triangulation built
+    /// elsewhere (the parallel construction) becomes this storage.
+    void assign(std::vector<Record> records, std::size_t vertices) {
+        records_ = std::move(records);
+        const std::size_t n = records_.size();
+        alive_.assign(n / 64 + 1, 0);
+        for (std::size_t w = 0; w < n / 64; ++w) {
+            alive_[w] = ~std::uint64_t{0};
+        }
+        if (n % 64 != 0) {
+            alive_[n / 64] = (std::uint64_t{1} << (n % 64)) - 1;
+        }
+        free_ = PodStack<TetId>();
+        released_ = PodStack<TetId>();
+        vertex_tet_.assign(vertices, kNoTet);
+        for (std::size_t t = 0; t < n; ++t) {
+            for (VertexId u : records_[t].v) {
+                if (u != kGhostVertex) {
+                    vertex_tet_[u] = static_cast<TetId>(t);
+                }
+            }
+        }
+        live_ = n;
     }
 
     std::size_t bytes() const {

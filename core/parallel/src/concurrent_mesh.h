@@ -1,0 +1,145 @@
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "cavity/core/mesh/array_storage.h"
+#include "cavity/core/mesh/tetrahedron.h"
+
+namespace cavity::core {
+
+/// The tetrahedra of a parallel construction, shared by its threads: the array storage's records
+/// (vertices and neighbours), one owner byte per slot (the tetrahedron's lock) and one liveness
+/// bit.
+///
+/// The discipline that makes it race-free: a thread reads or writes a record only while it owns
+/// the slot (try_lock acquired it, unlock releases it), so the lock's acquire and release order
+/// every record access; the owner bytes and the liveness words, which neighbouring slots of
+/// different owners share, are only touched atomically. A thread owns every tetrahedron it looks
+/// at while inserting a point (the walk's current one, the cavity, the cavity's neighbours), as in
+/// HXT's parallel Delaunay (Marot, Pellerin & Remacle 2019): whoever would change a tetrahedron,
+/// or the neighbour pointer towards it, must own it first.
+///
+/// Slots are handed out in blocks (claim_block) from one counter, so threads never share a block.
+/// The arrays grow only between passes, when no thread runs (grow).
+class ConcurrentMesh {
+public:
+    /// Owner byte of a free slot; a thread's byte is its id (1 to 127), with kCavityBit set while
+    /// the tetrahedron is in that thread's current cavity.
+    static constexpr std::uint8_t kFree = 0;
+    static constexpr std::uint8_t kCavityBit = 0x80;
+
+    /// Makes room for `slots` slots; the new ones are dead and free. No thread may run.
+    void grow(std::size_t slots) {
+        records_.resize(slots);
+        owner_.resize(slots, kFree);
+        alive_.resize(slots / 64 + 1, 0);
+        next_.store(std::min<std::size_t>(next_.load(), capacity()));
+    }
+
+    std::size_t capacity() const { return records_.size(); }
+
+    /// Slots handed out so far (every live tetrahedron is below).
+    std::size_t used() const { return std::min<std::size_t>(next_.load(), capacity()); }
+
+    /// Up to `count` fresh slots [first, end): end == first when the capacity is exhausted.
+    struct Block {
+        TetId first;
+        TetId end;
+    };
+
+    Block claim_block(std::size_t count) {
+        const std::size_t first = next_.fetch_add(count, std::memory_order_relaxed);
+        const std::size_t cap = capacity();
+        return {static_cast<TetId>(std::min(first, cap)),
+                static_cast<TetId>(std::min(first + count, cap))};
+    }
+
+    ArrayRecord& record(TetId t) { return records_[t]; }
+
+    const ArrayRecord& record(TetId t) const { return records_[t]; }
+
+    bool try_lock(TetId t, std::uint8_t me) {
+        std::uint8_t expected = kFree;
+        return std::atomic_ref<std::uint8_t>(owner_[t]).compare_exchange_strong(
+            expected, me, std::memory_order_acquire, std::memory_order_relaxed);
+    }
+
+    std::uint8_t owner(TetId t) {
+        return std::atomic_ref<std::uint8_t>(owner_[t]).load(std::memory_order_relaxed);
+    }
+
+    /// Changes the byte of a slot the caller owns (marks it in or out of its cavity), or claims a
+    /// fresh slot no other thread can know of.
+    void set_owner(TetId t, std::uint8_t value) {
+        std::atomic_ref<std::uint8_t>(owner_[t]).store(value, std::memory_order_relaxed);
+    }
+
+    void unlock(TetId t) {
+        std::atomic_ref<std::uint8_t>(owner_[t]).store(kFree, std::memory_order_release);
+    }
+
+    bool alive(TetId t) {
+        return (std::atomic_ref<std::uint64_t>(alive_[t >> 6]).load(std::memory_order_relaxed) >>
+                    (t & 63u) &
+                1u) != 0;
+    }
+
+    void set_alive(TetId t) {
+        std::atomic_ref<std::uint64_t>(alive_[t >> 6])
+            .fetch_or(std::uint64_t{1} << (t & 63u), std::memory_order_relaxed);
+    }
+
+    void set_dead(TetId t) {
+        std::atomic_ref<std::uint64_t>(alive_[t >> 6])
+            .fetch_and(~(std::uint64_t{1} << (t & 63u)), std::memory_order_relaxed);
+    }
+
+    void prefetch_neighbours(TetId t) const {
+        for (HalfFacet h : records_[t].n) {
+            if (h != kNoHalfFacet) {
+                __builtin_prefetch(&records_[tet_of(h)]);
+            }
+        }
+    }
+
+    /// Hands the records over (slot t is element t; dead slots hold garbage); the liveness bits
+    /// stay readable until clear(). No thread may run.
+    std::vector<ArrayRecord> take_records() { return std::move(records_); }
+
+    /// Frees the memory. No thread may run.
+    void clear() {
+        std::vector<ArrayRecord>().swap(records_);
+        std::vector<std::uint8_t>().swap(owner_);
+        std::vector<std::uint64_t>().swap(alive_);
+        next_.store(0);
+    }
+
+    /// What CavityGluer asks of a storage, on slots the caller owns.
+    struct OwnedRecords {
+        ConcurrentMesh& mesh;
+
+        const TetVertices& vertices(TetId t) const { return mesh.record(t).v; }
+
+        void set_adjacent(HalfFacet a, HalfFacet b) const {
+            mesh.record(tet_of(a)).n[static_cast<std::size_t>(facet_of(a))] = b;
+        }
+
+        void glue(HalfFacet a, HalfFacet b) const {
+            set_adjacent(a, b);
+            set_adjacent(b, a);
+        }
+    };
+
+private:
+    std::vector<ArrayRecord> records_;
+    std::vector<std::uint8_t> owner_;
+    std::vector<std::uint64_t> alive_;
+    std::atomic<std::size_t> next_{0};
+};
+
+}  // namespace cavity::core
