@@ -7,7 +7,7 @@
 #include "cavity/core/cdt/cdt.h"
 #include "cavity/core/cdt/cdt_carve.h"
 #include "cavity/core/cdt/cdt_vertex_insertion.h"
-#include "cavity/core/cdt/read_poly.h"
+#include "cavity/core/cdt/read_plc.h"
 #include "cavity/core/input/plc.h"
 #include "cavity/core/io/atomic_file.h"
 #include "cavity/core/io/mesh_io.h"
@@ -112,7 +112,7 @@ double volume(const std::vector<core::Point3>& pts, const std::vector<core::Tet>
 }
 
 void run_cdt(const CdtArgs& args) {
-    core::Plc plc = core::read_poly(args.input);
+    core::Plc plc = core::read_plc(args.input);
     core::LiveCdt live(std::move(plc), core::CdtOptions{args.protect});
     if (!args.insert.empty()) {
         insert_points(live, args);
