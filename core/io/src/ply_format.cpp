@@ -210,7 +210,7 @@ void Cursor::fail(const std::string& what) const {
     if (ascii()) {
         source_.fail(token_line_, what);
     }
-    source_.fail(what + " (byte " + std::to_string(header_.data_offset + pos_) + ")");
+    source_.fail(what + " (byte " + std::to_string(header_.data_offset + value_start_) + ")");
 }
 
 void Cursor::fail_truncated(const Element& element, std::uint64_t i) const {
@@ -282,6 +282,7 @@ double Cursor::value(Type type, const std::string& what, const Element& element,
         }
         return source_.number(token, token_line_, what);
     }
+    value_start_ = pos_;
     if (!binary_has(type_size(type))) {
         fail_truncated(element, i);
     }
@@ -316,6 +317,7 @@ void Cursor::skip_property(const Property& property, const Element& element, std
         if (ascii()) {
             ascii_token(element, i);
         } else {
+            value_start_ = pos_;
             if (!binary_has(type_size(property.type))) {
                 fail_truncated(element, i);
             }

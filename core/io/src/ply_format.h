@@ -84,7 +84,7 @@ public:
     std::size_t line() const { return ascii() ? token_line_ : 0; }
 
     /// Fails naming where the cursor is: the line of the last ASCII token, or the byte offset in
-    /// the file of the next binary value.
+    /// the file of the last binary value read (or found missing).
     [[noreturn]] void fail(const std::string& what) const;
 
 private:
@@ -99,9 +99,10 @@ private:
     const TextSource& source_;
     const Header& header_;
     std::string_view data_;
-    std::size_t pos_ = 0;         ///< next byte of data_ (both encodings)
-    std::size_t line_ = 0;        ///< ASCII: the line at pos_
-    std::size_t token_line_ = 0;  ///< ASCII: the line of the last token read
+    std::size_t pos_ = 0;          ///< next byte of data_ (both encodings)
+    std::size_t value_start_ = 0;  ///< binary: where the last value read (or missing) starts
+    std::size_t line_ = 0;         ///< ASCII: the line at pos_
+    std::size_t token_line_ = 0;   ///< ASCII: the line of the last token read
 };
 
 }  // namespace cavity::core::ply
