@@ -62,8 +62,7 @@ Plc read_binary(const TextSource& source, std::string_view bytes) {
         source.fail("a binary STL file of " + std::to_string(count) + " triangles has " +
                     std::to_string(expected) + " bytes, this one has " +
                     std::to_string(bytes.size()) +
-                    " (not an ASCII STL either: it does not "
-                    "start with 'solid')");
+                    " (nor is it ASCII STL, which starts with 'solid' and has no NUL byte)");
     }
     Plc plc;
     PointMerger merger(plc);
@@ -180,13 +179,14 @@ Plc read_stl(const std::string& file, std::string_view bytes) {
         source.fail("empty file");
     }
     // Many binary writers start the header with "solid" too, so a size that agrees with the
-    // binary triangle count decides first.
+    // binary triangle count decides first; a file with NUL bytes is no ASCII STL either (a
+    // truncated binary one is then refused by its size, not parsed as text).
     const bool binary_size =
         bytes.size() >= kHeaderBytes + 4 &&
         bytes.size() == kHeaderBytes + 4 +
                             kTriangleBytes * std::uint64_t{little_endian_u32(bytes, kHeaderBytes)};
-    Plc plc = binary_size || !starts_with_solid(bytes) ? read_binary(source, bytes)
-                                                       : read_ascii(source, bytes);
+    const bool text = starts_with_solid(bytes) && bytes.find('\0') == std::string_view::npos;
+    Plc plc = binary_size || !text ? read_binary(source, bytes) : read_ascii(source, bytes);
     plc.points.index_base = 0;
     return plc;
 }
