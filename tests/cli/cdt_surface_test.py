@@ -1,5 +1,5 @@
 """`cavity cdt` on surface meshes end to end: the L-shaped prism (a non-convex solid of volume 3) as
-OFF, OBJ, ASCII and binary STL and ASCII and binary PLY meshes and carves to exactly that volume,
+OFF, OBJ, ASCII and binary STL, ASCII and binary PLY and TetGen .smesh meshes and carves to exactly that volume,
 and `cavity check --poly` validates the result; surfaces that bound no solid and malformed files
 are refused with exit status 1, their facets or lines named, and nothing written."""
 
@@ -66,6 +66,12 @@ def ply(points, faces, fmt):
     return head + body
 
 
+def smesh(points, faces):
+    lines = [f"{len(points)} 3 0 0"] + [f"{i} {x} {y} {z}" for i, (x, y, z) in enumerate(points)]
+    lines += [f"{len(faces)} 1"] + [f"3 {a} {b} {c} {k + 1}" for k, (a, b, c) in enumerate(faces)]
+    return "\n".join(lines + ["0", "0"]) + "\n"
+
+
 def exact_volume(prefix):
     """The sum of the kept tetrahedra's volumes in rationals; each must be positive."""
     with open(prefix + ".node") as f:
@@ -112,6 +118,7 @@ with tempfile.TemporaryDirectory() as work:
         "l_ascii.ply": ply(POINTS, FACES, "ascii"),
         "l_le.ply": ply(POINTS, FACES, "binary_little_endian"),
         "l_be.ply": ply(POINTS, FACES, "binary_big_endian"),
+        "l.smesh": smesh(POINTS, FACES),
     }
     for name, content in meshes.items():
         r, prefix = cdt(name, content)

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "cavity/core/base/error.h"
+#include "cavity/core/io/parse_poly.h"
 #include "cavity/core/io/surface_mesh.h"
 #include "temp_dir.h"
 
@@ -345,6 +346,31 @@ TEST(SurfaceMesh, ExtensionsChooseTheFormat) {
     EXPECT_FALSE(is_surface_mesh_file("a.poly"));
     EXPECT_FALSE(is_surface_mesh_file("a.smesh"));
     EXPECT_FALSE(is_surface_mesh_file("off"));
+}
+
+TEST(SurfaceMesh, SmeshFacetsAreOnePolygonEach) {
+    TempDir dir;
+    // TetGen's .smesh: the .poly's parts, but each facet one polygon with an optional marker.
+    const std::string points = "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n";
+    const Plc plc = parse_poly(
+        dir.write("t.Smesh", points + "4 1\n3 1 3 2 5\n3 1 2 4 6\n3 2 3 4\n3 1 4 3 8\n0\n0\n"));
+    ASSERT_EQ(plc.facets.size(), 4u);
+    EXPECT_EQ(plc.points.index_base, 1);
+    EXPECT_EQ(plc.facets[0].loops[0], (Loop{0, 2, 1}));
+    EXPECT_EQ(plc.facets[0].marker, 5);
+    EXPECT_EQ(plc.facets[2].marker, 0);
+    EXPECT_EQ(plc.facets[3].marker, 8);
+    EXPECT_EQ(plc.facets[3].line, 10u);
+    EXPECT_EQ(facet_name(plc, 3), "facet 4 (line 10)");
+    try {
+        parse_poly(dir.write("bad.smesh", points + "1 0\n3 1 2 4 6\n"));
+        ADD_FAILURE() << "a marker was accepted where the header declares none";
+    } catch (const Error& e) {
+        EXPECT_NE(
+            std::string(e.what()).find("bad.smesh:7: the facet declares 3 corners but lists 4"),
+            std::string::npos)
+            << e.what();
+    }
 }
 
 }  // namespace
