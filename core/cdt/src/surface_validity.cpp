@@ -65,6 +65,9 @@ std::optional<std::string> degeneracy(const Plc& plc, const PlcFacet& facet) {
             return std::string("its corners are collinear (zero area)");
         }
     }
+    if (facet.loops.size() == 1 && facet.loops[0].size() == 3) {
+        return std::nullopt;  // a triangle with area is planar: no rational plane needed
+    }
     const auto plane = ExactPlane::of_facet(plc, facet);
     if (!plane) {
         return std::string("its corners are collinear (zero area)");

@@ -132,20 +132,28 @@ bool segment_meets_triangle(
 bool triangles_meet_improperly(const std::vector<Point3>& points,
                                const Triangle& s,
                                const Triangle& t) {
-    // Corners of t shared with s, and t's others.
-    std::vector<std::uint32_t> shared;
-    std::vector<std::uint32_t> s_own;
-    std::vector<std::uint32_t> t_own;
+    // Corners of s shared with t, and each triangle's others (fixed arrays: this runs for every
+    // candidate pair).
+    std::array<std::uint32_t, 3> shared{};
+    std::array<std::uint32_t, 3> s_own{};
+    std::array<std::uint32_t, 3> t_own{};
+    std::size_t n_shared = 0;
+    std::size_t n_s_own = 0;
+    std::size_t n_t_own = 0;
     for (const std::uint32_t v : s) {
-        (std::find(t.begin(), t.end(), v) != t.end() ? shared : s_own).push_back(v);
+        if (std::find(t.begin(), t.end(), v) != t.end()) {
+            shared[n_shared++] = v;
+        } else {
+            s_own[n_s_own++] = v;
+        }
     }
     for (const std::uint32_t v : t) {
         if (std::find(s.begin(), s.end(), v) == s.end()) {
-            t_own.push_back(v);
+            t_own[n_t_own++] = v;
         }
     }
     const auto& P = points;
-    switch (shared.size()) {
+    switch (n_shared) {
         case 3:
             return true;  // the same triangle twice
         case 2: {
