@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 #include "box_grid.h"
@@ -41,6 +42,32 @@ void find_edge_defects(const Plc& plc, SurfaceDefects& defects) {
             defects.non_manifold_edges.push_back(std::move(edge));
         }
     }
+}
+
+void find_coincident_points(const Plc& plc, SurfaceDefects& defects) {
+    std::vector<std::uint32_t> corners;
+    for (const PlcFacet& facet : plc.facets) {
+        for (const auto& loop : facet.loops) {
+            corners.insert(corners.end(), loop.begin(), loop.end());
+        }
+    }
+    std::sort(corners.begin(), corners.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    // Equal coordinates sort together (-0.0 == 0.0 compares equal, as it must), and by index
+    // within a run, so each later index pairs with the first.
+    const auto& pts = plc.points.points;
+    const auto key = [&pts](std::uint32_t v) { return std::tuple(pts[v].x, pts[v].y, pts[v].z); };
+    std::stable_sort(corners.begin(), corners.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return key(a) < key(b);
+    });
+    for (std::size_t i = 0; i < corners.size();) {
+        std::size_t j = i + 1;
+        for (; j < corners.size() && key(corners[j]) == key(corners[i]); ++j) {
+            defects.coincident_points.push_back({corners[i], corners[j]});
+        }
+        i = j;
+    }
+    std::sort(defects.coincident_points.begin(), defects.coincident_points.end());
 }
 
 /// Why a facet is degenerate, or nothing.
@@ -210,6 +237,7 @@ void append_kind(std::string& out,
 
 SurfaceDefects surface_defects(const Plc& plc) {
     SurfaceDefects defects;
+    find_coincident_points(plc, defects);
     find_edge_defects(plc, defects);
     std::vector<bool> degenerate(plc.facets.size(), false);
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
@@ -224,6 +252,13 @@ SurfaceDefects surface_defects(const Plc& plc) {
 
 std::string describe_defects(const Plc& plc, const SurfaceDefects& defects, std::size_t shown) {
     std::string out = "the surface mesh does not bound a solid (nothing was meshed):";
+    append_kind(out,
+                defects.coincident_points,
+                shown,
+                "pairs of facet corners at the same coordinates (only STL is merged on reading)",
+                [&](const std::array<std::uint32_t, 2>& p) {
+                    return "points " + point_name(plc, p[0]) + " and " + point_name(plc, p[1]);
+                });
     append_kind(out,
                 defects.open_edges,
                 shown,

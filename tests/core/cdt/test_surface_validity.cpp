@@ -109,6 +109,25 @@ TEST(SurfaceValidity, DegenerateFacetsSayWhy) {
     EXPECT_EQ(d.degenerate[3].why, "corners 14 and 1 are the same point");
 }
 
+TEST(SurfaceValidity, CoincidentCornersAreNamedNotMerged) {
+    // Bottom triangle 0 uses point 12, a copy of point 0 (with -0.0 for 0.0): the surface is open
+    // along 0-1 and 0-2 by index, and the message says why.
+    Plc plc = l_prism();
+    plc.points.points.push_back({-0.0, 0, -0.0});
+    plc.facets[0].loops[0][0] = 12;
+    const SurfaceDefects d = surface_defects(plc);
+    EXPECT_EQ(d.coincident_points, (std::vector<std::array<std::uint32_t, 2>>{{0, 12}}));
+    EXPECT_FALSE(d.open_edges.empty());
+    const std::string text = describe_defects(plc, d, 10);
+    EXPECT_NE(text.find("1 pairs of facet corners at the same coordinates"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find("points 0 and 12"), std::string::npos) << text;
+    // An unreferenced copy is no corner: left to the CDT, which refuses coincident points.
+    Plc spare = l_prism();
+    spare.points.points.push_back({0, 0, 0});
+    EXPECT_TRUE(surface_defects(spare).empty());
+}
+
 /// The pairs of facets reported as intersecting.
 std::vector<std::array<std::size_t, 2>> intersecting(const Plc& plc) {
     return surface_defects(plc).intersecting;

@@ -27,6 +27,9 @@ struct DegenerateFacet {
 };
 
 struct SurfaceDefects {
+    /// Corners of facets at equal coordinates under different indices ({first, later} by index):
+    /// OFF, OBJ and PLY keep the file's numbering, so such points are reported, not merged.
+    std::vector<std::array<std::uint32_t, 2>> coincident_points;
     std::vector<SurfaceEdge> open_edges;          ///< a side of one facet only
     std::vector<SurfaceEdge> non_manifold_edges;  ///< a side of three facets or more
     std::vector<DegenerateFacet> degenerate;      ///< a repeated corner, collinear or non-planar
@@ -36,8 +39,8 @@ struct SurfaceDefects {
     std::vector<std::array<std::size_t, 2>> intersecting;
 
     bool empty() const {
-        return open_edges.empty() && non_manifold_edges.empty() && degenerate.empty() &&
-               intersecting.empty();
+        return coincident_points.empty() && open_edges.empty() && non_manifold_edges.empty() &&
+               degenerate.empty() && intersecting.empty();
     }
 };
 
