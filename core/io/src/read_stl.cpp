@@ -128,9 +128,9 @@ Plc read_ascii(const TextSource& source, std::string_view bytes) {
         if (fields.size() != 5 || fields[1] != "normal") {
             source.fail(facet_line, "a facet starts with 'facet normal nx ny nz'");
         }
-        for (std::size_t k = 2; k < 5; ++k) {
-            source.number(fields[k], facet_line, "normal");
-        }
+        // The normal is not used (the corners' order gives the orientation), and exporters write
+        // "nan" for it on degenerate triangles: such a file is refused by the surface check, which
+        // names the facet, rather than here for a number nothing reads.
         const auto outer = expect(source, lines, "outer");
         if (outer.size() != 2 || outer[1] != "loop") {
             source.fail(lines.number(), "expected 'outer loop'");

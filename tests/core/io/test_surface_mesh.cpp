@@ -219,6 +219,13 @@ TEST(SurfaceMesh, StlMergesEqualCoordinatesInOrderOfFirstAppearance) {
     }
 }
 
+TEST(SurfaceMesh, StlNormalsAreNotRead) {
+    TempDir dir;
+    std::string s = tetrahedron_stl_ascii();
+    s.replace(s.find("normal 0 0 0"), 12, "normal -nan nan 1e999");
+    EXPECT_EQ(read_surface_mesh(dir.write("n.stl", s)).facets.size(), 4u);
+}
+
 TEST(SurfaceMesh, StlMergesSignedZeros) {
     TempDir dir;
     std::string s = tetrahedron_stl_ascii();
