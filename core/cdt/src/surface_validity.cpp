@@ -7,6 +7,7 @@
 
 #include "box_grid.h"
 #include "cavity/core/base/error.h"
+#include "ear_clipping.h"
 #include "exact_plane.h"
 #include "triangle_intersection.h"
 
@@ -109,41 +110,11 @@ std::optional<std::string> degeneracy(const Plc& plc, const PlcFacet& facet) {
     return std::nullopt;
 }
 
-/// A loop (planar, not degenerate) as the triangles from its first corner, when it is strictly
-/// convex: every side has all the other corners strictly on one side, the same for every side, in
-/// a projection that keeps the loop's plane one-to-one. Else nothing.
-std::optional<std::vector<Triangle>> convex_fan(const Plc& plc,
-                                                const std::vector<std::uint32_t>& loop) {
-    const auto& pts = plc.points.points;
-    std::vector<Triangle> fan;
-    for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
-        fan.push_back({loop[0], loop[i], loop[i + 1]});
-    }
-    if (loop.size() == 3) {
-        return fan;
-    }
-    const int drop = projection_axis(pts[loop[0]], pts[loop[1]], pts[loop[2]]);
-    const int turn = orient2d_projected(pts[loop[0]], pts[loop[1]], pts[loop[2]], drop);
-    if (turn == 0) {
-        return std::nullopt;
-    }
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-        const Point3& a = pts[loop[i]];
-        const Point3& b = pts[loop[(i + 1) % loop.size()]];
-        for (std::size_t k = 0; k < loop.size(); ++k) {
-            if (k != i && k != (i + 1) % loop.size() &&
-                orient2d_projected(a, b, pts[loop[k]], drop) != turn) {
-                return std::nullopt;
-            }
-        }
-    }
-    return fan;
-}
-
 /// The triangles of the facets to test for intersection, each with its facet.
 struct FacetTriangles {
     std::vector<Triangle> triangles;
     std::vector<std::size_t> facet;
+    std::vector<std::size_t> unsimple;  ///< facets with a loop that is no simple polygon
 };
 
 FacetTriangles facet_triangles(const Plc& plc, const std::vector<bool>& degenerate) {
@@ -152,12 +123,22 @@ FacetTriangles facet_triangles(const Plc& plc, const std::vector<bool>& degenera
         if (degenerate[f]) {
             continue;
         }
-        for (const auto& loop : plc.facets[f].loops) {
-            if (const auto fan = convex_fan(plc, loop)) {
-                for (const Triangle& t : *fan) {
+        const auto& loops = plc.facets[f].loops;
+        if (loops.size() == 1 && loops[0].size() == 3) {
+            out.triangles.push_back({loops[0][0], loops[0][1], loops[0][2]});
+            out.facet.push_back(f);
+            continue;
+        }
+        // A polygon: the projection of its plane, then its ears.
+        const int drop = ExactPlane::of_facet(plc, plc.facets[f])->dropped_axis();
+        for (const auto& loop : loops) {
+            if (const auto ears = ear_clipping(plc.points.points, loop, drop)) {
+                for (const Triangle& t : *ears) {
                     out.triangles.push_back(t);
                     out.facet.push_back(f);
                 }
+            } else {
+                out.unsimple.push_back(f);
             }
         }
     }
@@ -169,6 +150,12 @@ void find_intersections(const Plc& plc,
                         SurfaceDefects& defects) {
     const auto& pts = plc.points.points;
     const FacetTriangles tris = facet_triangles(plc, degenerate);
+    for (const std::size_t f : tris.unsimple) {
+        defects.degenerate.push_back({f, "its loop is not a simple polygon (no ear to clip)"});
+    }
+    std::sort(defects.degenerate.begin(),
+              defects.degenerate.end(),
+              [](const DegenerateFacet& a, const DegenerateFacet& b) { return a.facet < b.facet; });
     std::vector<Box> boxes;
     Box bounds;
     for (const Triangle& t : tris.triangles) {

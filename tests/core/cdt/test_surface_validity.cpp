@@ -1,7 +1,9 @@
 // Surface meshes that bound no solid are refused before meshing, naming their facets: open and
 // non-manifold edges, degenerate facets and facets meeting improperly, the last by exact orient3d
 // signs (triangle_intersection.h).
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,7 @@
 #include "plc_builders.h"
 #include "temp_dir.h"
 // White-box: the triangle tests are internal to the core.
+#include "../../../core/cdt/src/ear_clipping.h"
 #include "../../../core/cdt/src/triangle_intersection.h"
 
 namespace cavity::core {
@@ -146,7 +149,7 @@ TEST(SurfaceValidity, FacetsMeetingImproperlyAreNamedInPairs) {
     EXPECT_EQ(intersecting(twice), (std::vector<std::array<std::size_t, 2>>{{0, 20}}));
 }
 
-TEST(SurfaceValidity, ConvexPolygonsAreTestedAsFans) {
+TEST(SurfaceValidity, PolygonsAreTestedByTheirEars) {
     // The unit square at z = 0.5 around the L's corner (0, 0): it crosses the side y = 0 above its
     // diagonal (triangle 9) and the side x = 0 below its diagonal (triangle 18).
     Plc plc = l_prism({{{12, 13, 14, 15}}});
@@ -154,9 +157,29 @@ TEST(SurfaceValidity, ConvexPolygonsAreTestedAsFans) {
         plc.points.points.push_back({x, y, 0.5});
     }
     EXPECT_EQ(intersecting(plc), (std::vector<std::array<std::size_t, 2>>{{9, 20}, {18, 20}}));
-    // Made non-convex (corner 14 pulled in to a reflex corner), it is left to plc_violations.
+    // Made non-convex, with corner 14 pulled in to (-0.25, -0.25), it stays out of the L, though
+    // its convex hull (and the fan from corner 13) touches the L's edge x = y = 0.
     plc.points.points[14] = {-0.25, -0.25, 0.5};
     EXPECT_TRUE(intersecting(plc).empty());
+    // Below y = 0 with a reflex corner at (0.25, -0.25): apart; that corner moved to (0.25, 0.25),
+    // the polygon reaches into the L through both sides again.
+    plc.points.points[14] = {0.25, -0.25, 0.5};
+    plc.points.points[15] = {-0.5, -0.25, 0.5};
+    EXPECT_TRUE(intersecting(plc).empty());
+    plc.points.points[14] = {0.25, 0.25, 0.5};
+    EXPECT_EQ(intersecting(plc), (std::vector<std::array<std::size_t, 2>>{{9, 20}, {18, 20}}));
+}
+
+TEST(SurfaceValidity, ASelfCrossingLoopIsDegenerate) {
+    // A bow tie: its sides 12-13 and 14-15 cross.
+    Plc plc = l_prism({{{12, 13, 14, 15}}});
+    for (const auto& [x, y] : {std::pair{5.0, 5.0}, {6.0, 6.0}, {6.0, 5.0}, {5.0, 6.0}}) {
+        plc.points.points.push_back({x, y, 0.5});
+    }
+    const SurfaceDefects d = surface_defects(plc);
+    ASSERT_EQ(d.degenerate.size(), 1u);
+    EXPECT_EQ(d.degenerate[0].facet, 20u);
+    EXPECT_EQ(d.degenerate[0].why, "its loop is not a simple polygon (no ear to clip)");
 }
 
 TEST(SurfaceValidity, MessageCountsAndBoundsEachKind) {
@@ -199,6 +222,52 @@ TEST(SurfaceValidity, ReadPlcChecksSurfacesButNotPoly) {
     const Plc poly =
         read_plc(dir.write("one.poly", "3 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n1 0\n1\n3 0 1 2\n"));
     EXPECT_EQ(poly.facets.size(), 1u);
+}
+
+// --- ear clipping ---------------------------------------------------------------------------
+
+/// Twice the area of triangle abc in the plane z = 0, signed (exact for these small integers).
+double area2(const std::vector<Point3>& p, const Triangle& t) {
+    const Point3& a = p[t[0]];
+    const Point3& b = p[t[1]];
+    const Point3& c = p[t[2]];
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+TEST(EarClipping, SimplePolygonsGiveTriangulationsOfTheirArea) {
+    // A comb (reflex corners), with collinear corners on its base, in both orientations.
+    std::vector<Point3> pts = {{0, 0, 0},
+                               {2, 0, 0},
+                               {4, 0, 0},
+                               {6, 0, 0},
+                               {6, 4, 0},
+                               {5, 4, 0},
+                               {5, 1, 0},
+                               {4, 1, 0},
+                               {4, 4, 0},
+                               {1, 4, 0},
+                               {1, 1, 0},
+                               {0, 1, 0}};
+    std::vector<std::uint32_t> loop(pts.size());
+    std::iota(loop.begin(), loop.end(), 0u);
+    for (const bool reversed : {false, true}) {
+        if (reversed) {
+            std::reverse(loop.begin(), loop.end());
+        }
+        const auto ears = ear_clipping(pts, loop, 2);
+        ASSERT_TRUE(ears.has_value());
+        EXPECT_EQ(ears->size(), loop.size() - 2);
+        double total = 0;
+        for (const Triangle& t : *ears) {
+            const double a = area2(pts, t);
+            EXPECT_NE(a, 0.0);
+            EXPECT_EQ(a > 0, !reversed);  // every triangle turns the loop's way
+            total += a;
+        }
+        EXPECT_EQ(std::abs(total), 2 * (6 * 1 + 1 * 3 + 3 * 3));
+    }
+    // A self-crossing loop (sides 0-4 and 3-9 cross) has no triangulation by its corners.
+    EXPECT_FALSE(ear_clipping(pts, {0, 4, 3, 9}, 2).has_value());
 }
 
 // --- the triangle tests -------------------------------------------------------------------

@@ -32,10 +32,11 @@ struct SurfaceDefects {
     std::vector<std::array<std::uint32_t, 2>> coincident_points;
     std::vector<SurfaceEdge> open_edges;          ///< a side of one facet only
     std::vector<SurfaceEdge> non_manifold_edges;  ///< a side of three facets or more
-    std::vector<DegenerateFacet> degenerate;      ///< a repeated corner, collinear or non-planar
+    /// A repeated corner, coincident or collinear corners, non-planar, or a loop that is not a
+    /// simple polygon.
+    std::vector<DegenerateFacet> degenerate;
     /// Pairs of facets (positions, first < second) meeting other than along the sides and corners
-    /// they share: crossing, touching, overlapping or repeated. Degenerate facets are left out,
-    /// and so are polygons that are not convex (plc_violations checks them after protection).
+    /// they share: crossing, touching, overlapping or repeated. Degenerate facets are left out.
     std::vector<std::array<std::size_t, 2>> intersecting;
 
     bool empty() const {
@@ -46,7 +47,7 @@ struct SurfaceDefects {
 
 /// Every defect of the surface. Edges come from the loop sides; triangles are tested pairwise
 /// (exact orient3d signs) among the candidates a uniform grid of bounding boxes selects, and a
-/// convex polygon as the fan of triangles from its first corner.
+/// polygon as the triangles ear clipping cuts it into.
 SurfaceDefects surface_defects(const Plc& plc);
 
 /// The defects as one message: the counts of each kind, then up to `shown` of each, naming facets
