@@ -7,7 +7,7 @@
 #include "cavity/core/cdt/cdt.h"
 #include "cavity/core/cdt/cdt_carve.h"
 #include "cavity/core/cdt/cdt_vertex_insertion.h"
-#include "cavity/core/cdt/read_poly.h"
+#include "cavity/core/cdt/read_plc.h"
 #include "cavity/core/input/plc.h"
 #include "cavity/core/io/atomic_file.h"
 #include "cavity/core/io/mesh_io.h"
@@ -112,7 +112,7 @@ double volume(const std::vector<core::Point3>& pts, const std::vector<core::Tet>
 }
 
 void run_cdt(const CdtArgs& args) {
-    core::Plc plc = core::read_poly(args.input);
+    core::Plc plc = core::read_plc(args.input);
     core::LiveCdt live(std::move(plc), core::CdtOptions{args.protect});
     if (!args.insert.empty()) {
         insert_points(live, args);
@@ -199,12 +199,19 @@ void add_cdt_command(CLI::App& app) {
     auto args = std::make_shared<CdtArgs>();
     CLI::App* cmd = app.add_subcommand(
         "cdt",
-        "Constrained Delaunay tetrahedralization of a TetGen .poly PLC: Delaunay triangulation of "
+        "Constrained Delaunay tetrahedralization of a TetGen .poly or .smesh PLC, or of a closed "
+        "surface mesh (.off, .stl, .obj, .ply; refused, naming its facets, when it has open or "
+        "non-manifold edges, degenerate or intersecting facets): Delaunay triangulation of "
         "its vertices, then flip-based polygon insertion (§5.8); the PLC must be edge-protected. "
         "As TetGen's -p, the domain the polygons bound is kept: the tetrahedra reachable from the "
         "convex hull without crossing a polygon are removed, and so are those reachable from each "
         "volume hole point of the .poly");
-    cmd->add_option("input", args->input, "the PLC (.poly)")->required();
+    cmd->add_option(
+           "input",
+           args->input,
+           "the PLC (.poly, .smesh) or surface mesh (.off, .stl, .obj, .ply; by extension, "
+           "case-insensitive)")
+        ->required();
     cmd->add_option("-o,--output",
                     args->prefix,
                     "output prefix: PREFIX.node .ele .face .vtu, and PREFIX.poly, the PLC the mesh "

@@ -1,6 +1,7 @@
 // libFuzzer target for one of cavity's file readers, chosen at compile time (CAVITY_FUZZ_SUFFIX:
-// ".node", ".ele", ".poly", ".ply" or ".xyz"). The input bytes are the file. Refusing it with a
-// cavity Error is the expected outcome for malformed input; anything else (a crash, another
+// ".node", ".ele", ".poly", ".ply", ".xyz", ".off", ".stl" or ".obj"; surface meshes go through
+// read_plc, so the surface check is fuzzed with them). The input bytes are the file. Refusing it
+// with a cavity Error is the expected outcome for malformed input; anything else (a crash, another
 // exception, a sanitizer report, a hang or a huge allocation, which libFuzzer's -rss_limit_mb
 // catches) is a bug.
 
@@ -16,6 +17,7 @@
 #include <unistd.h>
 
 #include "cavity/core/base/error.h"
+#include "cavity/core/cdt/read_plc.h"
 #include "cavity/core/cdt/read_poly.h"
 #include "cavity/core/input/plc.h"
 #include "cavity/core/io/mesh_io.h"
@@ -39,7 +41,16 @@ void read_as_file() {
         (void)cavity::core::read_ele(scratch_file(), 1);
     } else if (suffix == ".poly") {
         (void)cavity::core::read_poly(scratch_file());
+    } else if (suffix == ".off" || suffix == ".stl" || suffix == ".obj") {
+        (void)cavity::core::read_plc(scratch_file());
     } else {
+        if (suffix == ".ply") {
+            try {
+                (void)cavity::core::read_plc(scratch_file());
+            } catch (const cavity::core::Error&) {
+                // a PLY of points only is no surface; the point reader below still runs
+            }
+        }
         (void)cavity::core::read_points(scratch_file(), false);
         (void)cavity::core::read_points(scratch_file(), true);
     }

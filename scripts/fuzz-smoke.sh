@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-20}"
 scripts/install-deps.sh
 cmake --preset fuzz >/dev/null
-targets=(node_fuzz ele_fuzz poly_fuzz ply_fuzz xyz_fuzz predicates_fuzz)
+targets=(node_fuzz ele_fuzz poly_fuzz ply_fuzz xyz_fuzz off_fuzz stl_fuzz obj_fuzz predicates_fuzz)
 cmake --build --preset fuzz --target "${targets[@]}"
 findings=build/fuzz/findings
 mkdir -p "$findings"

@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "box_grid.h"
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/edge_protection.h"
 #include "exact_plane.h"
@@ -13,42 +14,6 @@ namespace cavity::core {
 
 namespace {
 
-struct Box {
-    std::array<double, 3> lo{std::numeric_limits<double>::infinity(),
-                             std::numeric_limits<double>::infinity(),
-                             std::numeric_limits<double>::infinity()};
-    std::array<double, 3> hi{-std::numeric_limits<double>::infinity(),
-                             -std::numeric_limits<double>::infinity(),
-                             -std::numeric_limits<double>::infinity()};
-
-    void add(const Point3& p) {
-        const std::array<double, 3> c{p.x, p.y, p.z};
-        for (std::size_t k = 0; k < 3; ++k) {
-            lo[k] = std::min(lo[k], c[k]);
-            hi[k] = std::max(hi[k], c[k]);
-        }
-    }
-
-    bool contains(const Box& other) const {
-        for (std::size_t k = 0; k < 3; ++k) {
-            if (other.lo[k] < lo[k] || hi[k] < other.hi[k]) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /// Closed boxes: touching counts, since a corner on a facet's boundary matters.
-    bool meets(const Box& other) const {
-        for (std::size_t k = 0; k < 3; ++k) {
-            if (hi[k] < other.lo[k] || other.hi[k] < lo[k]) {
-                return false;
-            }
-        }
-        return true;
-    }
-};
-
 Box loop_box(const Plc& plc, const std::vector<std::uint32_t>& loop) {
     Box box;
     for (std::uint32_t c : loop) {
@@ -56,93 +21,6 @@ Box loop_box(const Plc& plc, const std::vector<std::uint32_t>& loop) {
     }
     return box;
 }
-
-/// A uniform grid over the points' bounding box holding the edges by the cells their boxes cover,
-/// so a facet meets only the edges registered in the cells of its own box. Cell indices come from
-/// one monotone function of a coordinate, so boxes that meet always share a cell.
-class EdgeGrid {
-public:
-    EdgeGrid(const Plc& plc, const std::vector<Box>& edge_boxes) {
-        Box all;
-        for (const Point3& p : plc.points.points) {
-            all.add(p);
-        }
-        bounds_ = all;
-        const auto n = static_cast<double>(edge_boxes.size());
-        resolution_ =
-            std::clamp(static_cast<std::size_t>(std::cbrt(n)), std::size_t{1}, std::size_t{64});
-        cells_.resize(resolution_ * resolution_ * resolution_);
-        for (std::size_t e = 0; e < edge_boxes.size(); ++e) {
-            const auto [lo, hi] = range(edge_boxes[e]);
-            std::size_t count = 1;
-            for (std::size_t k = 0; k < 3; ++k) {
-                count *= hi[k] - lo[k] + 1;
-            }
-            if (count > kMaxCellsPerEdge) {
-                everywhere_.push_back(e);  // a long diagonal edge: test it against every facet
-                continue;
-            }
-            for_cells(lo, hi, [&](std::size_t cell) { cells_[cell].push_back(e); });
-        }
-        stamp_.assign(edge_boxes.size(), kNever);
-    }
-
-    /// The edges registered in the cells of `box` (each once), for the query numbered `query`.
-    std::vector<std::size_t> near(const Box& box, std::size_t query) {
-        std::vector<std::size_t> out = everywhere_;
-        const auto [lo, hi] = range(box);
-        for_cells(lo, hi, [&](std::size_t cell) {
-            for (std::size_t e : cells_[cell]) {
-                if (stamp_[e] != query) {
-                    stamp_[e] = query;
-                    out.push_back(e);
-                }
-            }
-        });
-        return out;
-    }
-
-private:
-    static constexpr std::size_t kMaxCellsPerEdge = 64;
-    static constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
-    using Index3 = std::array<std::size_t, 3>;
-
-    std::size_t cell_of(double x, std::size_t k) const {
-        const double width = bounds_.hi[k] - bounds_.lo[k];
-        if (!(width > 0)) {
-            return 0;
-        }
-        const double f = std::floor((x - bounds_.lo[k]) / width * static_cast<double>(resolution_));
-        return static_cast<std::size_t>(std::clamp(f, 0.0, static_cast<double>(resolution_ - 1)));
-    }
-
-    std::pair<Index3, Index3> range(const Box& box) const {
-        Index3 lo{};
-        Index3 hi{};
-        for (std::size_t k = 0; k < 3; ++k) {
-            lo[k] = cell_of(box.lo[k], k);
-            hi[k] = cell_of(box.hi[k], k);
-        }
-        return {lo, hi};
-    }
-
-    template <class F>
-    void for_cells(const Index3& lo, const Index3& hi, F&& f) const {
-        for (std::size_t i = lo[0]; i <= hi[0]; ++i) {
-            for (std::size_t j = lo[1]; j <= hi[1]; ++j) {
-                for (std::size_t k = lo[2]; k <= hi[2]; ++k) {
-                    f((i * resolution_ + j) * resolution_ + k);
-                }
-            }
-        }
-    }
-
-    Box bounds_;
-    std::size_t resolution_ = 1;
-    std::vector<std::vector<std::size_t>> cells_;
-    std::vector<std::size_t> everywhere_;
-    std::vector<std::size_t> stamp_;
-};
 
 /// A PLC edge and the facets that have it as a side (none: an explicit segment only).
 struct OwnedEdge {
@@ -368,7 +246,11 @@ std::vector<std::string> plc_violations(
         box.add(plc.points.points[e.edge[1]]);
         edge_boxes.push_back(box);
     }
-    EdgeGrid grid(plc, edge_boxes);
+    Box bounds;
+    for (const Point3& p : plc.points.points) {
+        bounds.add(p);
+    }
+    BoxGrid grid(bounds, edge_boxes);
     const auto& pts = plc.points.points;
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
         const PlcFacet& facet = plc.facets[f];

@@ -1,6 +1,7 @@
 #include "cavity/core/io/parse_poly.h"
 
 #include <algorithm>
+#include <cctype>
 #include <limits>
 #include <string>
 
@@ -158,7 +159,60 @@ PlcRegion region_seed(PolyParser& in, const std::vector<std::string_view>& token
             in.line()};
 }
 
-void read_facets_part(PolyParser& in, Plc& plc) {
+/// A facet's boundary marker, which must fit an int.
+int facet_marker(PolyParser& in, std::string_view token) {
+    const std::int64_t marker = in.source().integer(token, in.line(), "facet marker");
+    if (marker < std::numeric_limits<int>::min() || marker > std::numeric_limits<int>::max()) {
+        in.fail("facet marker " + std::to_string(marker) + " is outside the range of int");
+    }
+    return static_cast<int>(marker);
+}
+
+/// The polygon `<#corners> c1 c2 ...` of `tokens` (the count checked by the caller): a loop of the
+/// facet, or with two corners an explicit segment.
+void add_polygon(PolyParser& in,
+                 Plc& plc,
+                 const std::vector<std::string_view>& tokens,
+                 std::uint64_t corners,
+                 PlcFacet& facet) {
+    std::vector<std::uint32_t> loop;
+    for (std::size_t c = 1; c <= corners; ++c) {
+        loop.push_back(corner(in, plc, tokens[c]));
+    }
+    if (corners == 2) {
+        if (loop[0] == loop[1]) {
+            in.fail("a segment joins a point to itself");
+        }
+        plc.segments.push_back({loop[0], loop[1]});
+    } else if (corners >= 3) {
+        auto sorted = loop;
+        std::sort(sorted.begin(), sorted.end());
+        if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+            in.fail("a polygon lists a corner twice");
+        }
+        facet.loops.push_back(std::move(loop));
+    }
+}
+
+/// A facet of TetGen's .smesh: one polygon on one line, `<#corners> c1 c2 ... [<marker>]`.
+void read_smesh_facet(PolyParser& in, Plc& plc, bool markers, PlcFacet facet) {
+    const auto tokens = in.next("facet " + std::to_string(facet.number));
+    facet.line = in.line();
+    const std::uint64_t corners = in.bounded_count(tokens[0], "number of corners");
+    if (tokens.size() != corners + 1 && !(markers && tokens.size() == corners + 2)) {
+        in.fail("the facet declares " + std::to_string(corners) + " corners but lists " +
+                std::to_string(tokens.size() - 1) + " numbers");
+    }
+    if (tokens.size() == corners + 2) {
+        facet.marker = facet_marker(in, tokens.back());
+    }
+    add_polygon(in, plc, tokens, corners, facet);
+    if (!facet.loops.empty()) {
+        plc.facets.push_back(std::move(facet));
+    }
+}
+
+void read_facets_part(PolyParser& in, Plc& plc, bool smesh) {
     const auto header = in.next("the facet header");
     if (header.empty() || header.size() > 2) {
         in.fail("the facet header is `<#facets> [<markers 0|1>]`");
@@ -166,22 +220,21 @@ void read_facets_part(PolyParser& in, Plc& plc) {
     const std::uint64_t count = in.bounded_count(header[0], "number of facets");
     const bool markers = header.size() > 1 && in.count(header[1], "markers") != 0;
     for (std::uint64_t f = 0; f < count; ++f) {
+        PlcFacet facet;
+        facet.number = f + static_cast<std::uint64_t>(plc.points.index_base);
+        if (smesh) {
+            read_smesh_facet(in, plc, markers, std::move(facet));
+            continue;
+        }
         const auto fh = in.next("facet " + std::to_string(f));
         if (fh.empty() || fh.size() > 3) {
             in.fail("a facet header is `<#polygons> [<#holes> [<marker>]]`");
         }
-        PlcFacet facet;
         facet.line = in.line();
-        facet.number = f + static_cast<std::uint64_t>(plc.points.index_base);
         const std::uint64_t polygons = in.bounded_count(fh[0], "number of polygons");
         const std::uint64_t holes = fh.size() > 1 ? in.bounded_count(fh[1], "number of holes") : 0;
         if (markers && fh.size() > 2) {
-            const std::int64_t marker = in.source().integer(fh[2], in.line(), "facet marker");
-            if (marker < std::numeric_limits<int>::min() ||
-                marker > std::numeric_limits<int>::max()) {
-                in.fail("facet marker " + std::to_string(marker) + " is outside the range of int");
-            }
-            facet.marker = static_cast<int>(marker);
+            facet.marker = facet_marker(in, fh[2]);
         }
         for (std::uint64_t p = 0; p < polygons; ++p) {
             const auto tokens = in.next("polygon " + std::to_string(p) + " of a facet");
@@ -190,23 +243,7 @@ void read_facets_part(PolyParser& in, Plc& plc) {
                 in.fail("the polygon declares " + std::to_string(corners) + " corners but lists " +
                         std::to_string(tokens.size() - 1));
             }
-            std::vector<std::uint32_t> loop;
-            for (std::size_t c = 1; c < tokens.size(); ++c) {
-                loop.push_back(corner(in, plc, tokens[c]));
-            }
-            if (corners == 2) {
-                if (loop[0] == loop[1]) {
-                    in.fail("a segment joins a point to itself");
-                }
-                plc.segments.push_back({loop[0], loop[1]});
-            } else if (corners >= 3) {
-                auto sorted = loop;
-                std::sort(sorted.begin(), sorted.end());
-                if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
-                    in.fail("a polygon lists a corner twice");
-                }
-                facet.loops.push_back(std::move(loop));
-            }
+            add_polygon(in, plc, tokens, corners, facet);
         }
         for (std::uint64_t h = 0; h < holes; ++h) {
             facet.holes.push_back(hole_point(in, in.next("a facet hole")));
@@ -217,6 +254,15 @@ void read_facets_part(PolyParser& in, Plc& plc) {
     }
 }
 
+/// TetGen's .smesh differs from .poly only in its facets (one polygon each, no facet holes).
+bool is_smesh(const std::filesystem::path& file) {
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) {
+        return static_cast<char>(std::tolower(c));
+    });
+    return extension == ".smesh";
+}
+
 }  // namespace
 
 Plc parse_poly(const std::filesystem::path& file) {
@@ -225,7 +271,7 @@ Plc parse_poly(const std::filesystem::path& file) {
     Plc plc;
     plc.source = file.string();
     read_points_part(in, plc, file);
-    read_facets_part(in, plc);
+    read_facets_part(in, plc, is_smesh(file));
     if (in.more()) {
         const auto header = in.next_or_pending("the hole header");
         const std::uint64_t holes = in.bounded_count(header[0], "number of holes");

@@ -1,0 +1,199 @@
+#include "triangle_intersection.h"
+
+#include <algorithm>
+
+#include "cavity/predicates/orient3d.h"
+
+namespace cavity::core {
+
+namespace {
+
+int orient(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+    return static_cast<int>(predicates::orient3d(a, b, c, d));
+}
+
+}  // namespace
+
+// orient3d of the projected points (at z = 0) and the point (0, 0, 1): that determinant is the 2D
+// one up to sign, and exact since the projected coordinates are the input doubles.
+int orient2d_projected(const Point3& a, const Point3& b, const Point3& c, int drop) {
+    const auto flat = [drop](const Point3& p) -> Point3 {
+        switch (drop) {
+            case 0:
+                return {p.y, p.z, 0.0};
+            case 1:
+                return {p.z, p.x, 0.0};
+            default:
+                return {p.x, p.y, 0.0};
+        }
+    };
+    return orient(flat(a), flat(b), flat(c), {0.0, 0.0, 1.0});
+}
+
+int projection_axis(const Point3& a, const Point3& b, const Point3& c) {
+    for (int drop = 0; drop < 2; ++drop) {
+        if (orient2d_projected(a, b, c, drop) != 0) {
+            return drop;
+        }
+    }
+    return 2;
+}
+
+namespace {
+
+double coordinate(const Point3& p, int axis) {
+    return axis == 0 ? p.x : axis == 1 ? p.y : p.z;
+}
+
+/// r, collinear with p and q in the projection, lies on the closed segment pq: compared on the two
+/// kept coordinates (exact comparisons of doubles).
+bool on_segment(const Point3& p, const Point3& q, const Point3& r, int drop) {
+    for (int axis = 0; axis < 3; ++axis) {
+        if (axis == drop) {
+            continue;
+        }
+        const double u = coordinate(p, axis);
+        const double v = coordinate(q, axis);
+        const double w = coordinate(r, axis);
+        if (w < std::min(u, v) || std::max(u, v) < w) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/// The closed segments pq and rs (coplanar) share a point, decided in the projection.
+bool segments_meet(const Point3& p, const Point3& q, const Point3& r, const Point3& s, int drop) {
+    const int o1 = orient2d_projected(p, q, r, drop);
+    const int o2 = orient2d_projected(p, q, s, drop);
+    const int o3 = orient2d_projected(r, s, p, drop);
+    const int o4 = orient2d_projected(r, s, q, drop);
+    if (o1 * o2 < 0 && o3 * o4 < 0) {
+        return true;
+    }
+    return (o1 == 0 && on_segment(p, q, r, drop)) || (o2 == 0 && on_segment(p, q, s, drop)) ||
+           (o3 == 0 && on_segment(r, s, p, drop)) || (o4 == 0 && on_segment(r, s, q, drop));
+}
+
+/// p (in the plane of abc) lies in the closed triangle: no two of its sides see p on opposite
+/// sides.
+bool in_triangle(const Point3& p, const Point3& a, const Point3& b, const Point3& c, int drop) {
+    const int s1 = orient2d_projected(a, b, p, drop);
+    const int s2 = orient2d_projected(b, c, p, drop);
+    const int s3 = orient2d_projected(c, a, p, drop);
+    const bool negative = s1 < 0 || s2 < 0 || s3 < 0;
+    const bool positive = s1 > 0 || s2 > 0 || s3 > 0;
+    return !(negative && positive);
+}
+
+/// All three corners strictly on one side of the plane of abc.
+bool strictly_on_one_side(const Point3& a,
+                          const Point3& b,
+                          const Point3& c,
+                          const Point3& p,
+                          const Point3& q,
+                          const Point3& r) {
+    const int sp = orient(a, b, c, p);
+    return sp != 0 && sp == orient(a, b, c, q) && sp == orient(a, b, c, r);
+}
+
+}  // namespace
+
+bool is_degenerate_triangle(const Point3& a, const Point3& b, const Point3& c) {
+    // Collinear in space exactly when collinear in each of the three projections.
+    return orient2d_projected(a, b, c, 0) == 0 && orient2d_projected(a, b, c, 1) == 0 &&
+           orient2d_projected(a, b, c, 2) == 0;
+}
+
+bool segment_meets_triangle(
+    const Point3& p, const Point3& q, const Point3& a, const Point3& b, const Point3& c) {
+    const int sp = orient(a, b, c, p);
+    const int sq = orient(a, b, c, q);
+    if (sp != 0 && sp == sq) {
+        return false;
+    }
+    if (sp == 0 && sq == 0) {
+        const int drop = projection_axis(a, b, c);
+        return in_triangle(p, a, b, c, drop) || in_triangle(q, a, b, c, drop) ||
+               segments_meet(p, q, a, b, drop) || segments_meet(p, q, b, c, drop) ||
+               segments_meet(p, q, c, a, drop);
+    }
+    // The segment meets the plane in one point; it lies in the triangle exactly when the line pq
+    // passes no side of the triangle on the outside: the three volumes spanned by pq and a side
+    // never have opposite signs (zeros are the line through a side or a corner).
+    const int s1 = orient(p, q, a, b);
+    const int s2 = orient(p, q, b, c);
+    const int s3 = orient(p, q, c, a);
+    const bool negative = s1 < 0 || s2 < 0 || s3 < 0;
+    const bool positive = s1 > 0 || s2 > 0 || s3 > 0;
+    return !(negative && positive);
+}
+
+bool triangles_meet_improperly(const std::vector<Point3>& points,
+                               const Triangle& s,
+                               const Triangle& t) {
+    // Corners of s shared with t, and each triangle's others (fixed arrays: this runs for every
+    // candidate pair).
+    std::array<std::uint32_t, 3> shared{};
+    std::array<std::uint32_t, 3> s_own{};
+    std::array<std::uint32_t, 3> t_own{};
+    std::size_t n_shared = 0;
+    std::size_t n_s_own = 0;
+    std::size_t n_t_own = 0;
+    for (const std::uint32_t v : s) {
+        if (std::find(t.begin(), t.end(), v) != t.end()) {
+            shared[n_shared++] = v;
+        } else {
+            s_own[n_s_own++] = v;
+        }
+    }
+    for (const std::uint32_t v : t) {
+        if (std::find(s.begin(), s.end(), v) == s.end()) {
+            t_own[n_t_own++] = v;
+        }
+    }
+    const auto& P = points;
+    switch (n_shared) {
+        case 3:
+            return true;  // the same triangle twice
+        case 2: {
+            // Two planes through the shared side meet only along it; one plane holds both
+            // triangles, which overlap when their third corners lie on one side of the side.
+            const Point3& p = P[shared[0]];
+            const Point3& q = P[shared[1]];
+            const Point3& a = P[s_own[0]];
+            const Point3& b = P[t_own[0]];
+            if (orient(p, q, a, b) != 0) {
+                return false;
+            }
+            const int drop = projection_axis(p, q, a);
+            return orient2d_projected(p, q, a, drop) == orient2d_projected(p, q, b, drop);
+        }
+        case 1: {
+            // Their intersection is convex and holds the shared corner v; if it holds more, a ray
+            // from v through it leaves each triangle through the side opposite v, and the nearer
+            // exit lies in both triangles: so one opposite side meets the other triangle.
+            const Point3& v = P[shared[0]];
+            return segment_meets_triangle(P[s_own[0]], P[s_own[1]], v, P[t_own[0]], P[t_own[1]]) ||
+                   segment_meets_triangle(P[t_own[0]], P[t_own[1]], v, P[s_own[0]], P[s_own[1]]);
+        }
+        default:
+            break;
+    }
+    const Point3& a = P[s[0]];
+    const Point3& b = P[s[1]];
+    const Point3& c = P[s[2]];
+    const Point3& d = P[t[0]];
+    const Point3& e = P[t[1]];
+    const Point3& f = P[t[2]];
+    if (strictly_on_one_side(a, b, c, d, e, f) || strictly_on_one_side(d, e, f, a, b, c)) {
+        return false;
+    }
+    // Two closed triangles meet exactly when a side of one meets the other: an extreme point of
+    // their (convex) intersection lies on the boundary of one of them.
+    return segment_meets_triangle(a, b, d, e, f) || segment_meets_triangle(b, c, d, e, f) ||
+           segment_meets_triangle(c, a, d, e, f) || segment_meets_triangle(d, e, a, b, c) ||
+           segment_meets_triangle(e, f, a, b, c) || segment_meets_triangle(f, d, a, b, c);
+}
+
+}  // namespace cavity::core

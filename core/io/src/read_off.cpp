@@ -1,0 +1,114 @@
+// OFF (Geomview's Object File Format): a keyword, the counts, the vertices, the faces.
+
+#include <string>
+#include <vector>
+
+#include "surface_readers.h"
+#include "text_input.h"
+
+namespace cavity::core {
+
+namespace {
+
+/// A corner of a face: a point index.
+std::uint32_t corner(const TextSource& source,
+                     std::string_view token,
+                     std::size_t line,
+                     const Plc& plc) {
+    const std::uint64_t c = source.count(token, line, "vertex index");
+    if (c >= plc.points.size()) {
+        source.fail(line, not_a_point(static_cast<std::int64_t>(c), plc));
+    }
+    return static_cast<std::uint32_t>(c);
+}
+
+}  // namespace
+
+Plc read_off(const std::string& file, std::string_view bytes) {
+    const TextSource source(file);
+    LineReader lines(bytes);
+    if (!lines.next()) {
+        source.fail("empty file");
+    }
+    auto fields = split_whitespace(lines.text());
+    const std::string_view keyword = fields[0];
+    // The prefixes C (colours) and N (normals) add fields to each vertex line, read and skipped.
+    const bool extra_vertex_fields = keyword != "OFF";
+    if (keyword != "OFF" && keyword != "COFF" && keyword != "NOFF" && keyword != "CNOFF") {
+        source.fail(lines.number(), "not an OFF file: the first word must be OFF");
+    }
+    fields.erase(fields.begin());
+    if (fields.empty()) {
+        if (!lines.next()) {
+            source.fail(lines.number(), "file ends before the counts");
+        }
+        fields = split_whitespace(lines.text());
+    }
+    if (fields.size() < 2 || fields.size() > 3) {
+        source.fail(lines.number(), "the counts are `<#vertices> <#faces> [<#edges>]`");
+    }
+    const std::uint64_t limit = bytes.size();
+    const std::uint64_t vertices = source.count_at_most(
+        fields[0], lines.number(), "number of vertices", limit, "the file's size in bytes");
+    const std::uint64_t faces = source.count_at_most(
+        fields[1], lines.number(), "number of faces", limit, "the file's size in bytes");
+    if (fields.size() == 3) {
+        source.count(fields[2], lines.number(), "number of edges");
+    }
+    Plc plc;
+    plc.points.index_base = 0;
+    for (std::uint64_t v = 0; v < vertices; ++v) {
+        if (!lines.next()) {
+            source.fail(lines.number(),
+                        "file ends in vertex " + std::to_string(v) + " of the " +
+                            std::to_string(vertices) + " declared");
+        }
+        const auto xyz = split_whitespace(lines.text());
+        if (xyz.size() < 3 || (!extra_vertex_fields && xyz.size() != 3)) {
+            source.fail(lines.number(),
+                        "vertex " + std::to_string(v) + ": expected x y z, found " +
+                            std::to_string(xyz.size()) + " fields");
+        }
+        for (std::size_t k = 3; k < xyz.size(); ++k) {
+            source.number(xyz[k], lines.number(), "vertex field");
+        }
+        plc.points.points.push_back({source.number(xyz[0], lines.number(), "x"),
+                                     source.number(xyz[1], lines.number(), "y"),
+                                     source.number(xyz[2], lines.number(), "z")});
+    }
+    for (std::uint64_t f = 0; f < faces; ++f) {
+        if (!lines.next()) {
+            source.fail(lines.number(),
+                        "file ends in face " + std::to_string(f) + " of the " +
+                            std::to_string(faces) + " declared");
+        }
+        const auto tokens = split_whitespace(lines.text());
+        const std::uint64_t n = source.count_at_most(
+            tokens[0], lines.number(), "number of corners", limit, "the file's size in bytes");
+        if (n < 3) {
+            source.fail(lines.number(),
+                        "face " + std::to_string(f) + " has " + std::to_string(n) +
+                            " corners; a face needs at least 3");
+        }
+        if (tokens.size() < n + 1) {
+            source.fail(lines.number(),
+                        "face " + std::to_string(f) + " declares " + std::to_string(n) +
+                            " corners but lists " + std::to_string(tokens.size() - 1));
+        }
+        // What follows the corners is the face's colour.
+        for (std::size_t k = n + 1; k < tokens.size(); ++k) {
+            source.number(tokens[k], lines.number(), "face colour");
+        }
+        std::vector<std::uint32_t> corners;
+        for (std::size_t k = 1; k <= n; ++k) {
+            corners.push_back(corner(source, tokens[k], lines.number(), plc));
+        }
+        add_surface_face(plc, std::move(corners), lines.number());
+    }
+    if (lines.next()) {
+        source.fail(lines.number(), "data after the faces the counts declare");
+    }
+    return plc;
+}
+
+}  // namespace cavity::core
