@@ -1,8 +1,10 @@
 // cavity against CGAL's Delaunay_triangulation_3 (Epick, range insertion with its spatial sort)
-// on the same points in the same process. Prints one CSV row per (distribution, n, engine, run):
-// the CPU seconds for order + triangulation, the tetrahedra, and peak memory when one engine runs
-// alone (--only). The ratios are made by bench/run_peers_bench.sh.
+// on the same points in the same process, and cavity's parallel construction (--threads T) beside
+// its sequential engine. Prints one CSV row per (distribution, n, engine, run): the CPU and wall
+// seconds for order + triangulation, the tetrahedra, and peak memory when one engine runs alone
+// (--only). The ratios are made by bench/peers_report.py.
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -22,13 +24,19 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CgalDelaunay = CGAL::Delaunay_triangulation_3<Kernel>;
 
-// Process CPU time rather than wall-clock time: on a shared machine a descheduled engine would
-// otherwise be charged for other processes' work. Both engines are single-threaded.
-double now() {
+// Process CPU time compares the single-threaded engines: on a shared machine a descheduled engine
+// would otherwise be charged for other processes' work. The parallel construction is judged by
+// wall time, which is what threads shorten.
+double clock_seconds(clockid_t clock) {
     timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    clock_gettime(clock, &ts);
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
+
+struct Stamp {
+    double cpu = clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
+    double wall = clock_seconds(CLOCK_MONOTONIC);
+};
 
 std::uint64_t peak_rss_bytes() {
     rusage usage{};
@@ -38,16 +46,25 @@ std::uint64_t peak_rss_bytes() {
 
 struct Run {
     double seconds;
+    double wall_seconds;
     std::size_t tets;
 };
 
-Run run_cavity(const cavity::core::PointSet& points) {
-    const double start = now();
+Run since(const Stamp& start, std::size_t tets) {
+    const Stamp end;
+    return {end.cpu - start.cpu, end.wall - start.wall, tets};
+}
+
+/// threads 0: the sequential engine; else the parallel construction on that many threads.
+Run run_cavity(const cavity::core::PointSet& points, unsigned threads) {
+    const Stamp start;
     cavity::core::OrderOptions order;  // the defaults: BRIO, ratio 1/2, Hilbert within rounds
+    order.threads = std::max(1u, threads);
     const auto sequence = cavity::core::make_insertion_order(points.points, order).sequence;
-    const auto tri =
-        cavity::core::triangulate(points, sequence, cavity::core::TriangulateOptions{});
-    return {now() - start, tri.tets.size()};
+    cavity::core::TriangulateOptions options;
+    options.threads = threads;
+    const auto tri = cavity::core::triangulate(points, sequence, options);
+    return since(start, tri.tets.size());
 }
 
 Run run_cgal(const cavity::core::PointSet& points) {
@@ -56,10 +73,9 @@ Run run_cgal(const cavity::core::PointSet& points) {
     for (const auto& p : points.points) {
         cgal_points.emplace_back(p.x, p.y, p.z);
     }
-    const double start = now();
+    const Stamp start;
     CgalDelaunay dt(cgal_points.begin(), cgal_points.end());
-    const double seconds = now() - start;
-    return {seconds, dt.number_of_finite_cells()};
+    return since(start, dt.number_of_finite_cells());
 }
 
 }  // namespace
@@ -68,7 +84,8 @@ int main(int argc, char** argv) {
     std::string distribution = "cube";
     std::size_t n = 100000;
     int repeats = 3;
-    std::string only;  // "cavity" or "cgal": one engine alone, for its peak memory
+    unsigned threads = 2;  // of the engine "cavity-threads"
+    std::string only;      // "cavity", "cgal" or "cavity-threads": one engine alone, for its memory
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
         if (flag == "--dist") {
@@ -79,9 +96,12 @@ int main(int argc, char** argv) {
             repeats = std::atoi(argv[i + 1]);
         } else if (flag == "--only") {
             only = argv[i + 1];
+        } else if (flag == "--threads") {
+            threads = static_cast<unsigned>(std::strtoul(argv[i + 1], nullptr, 10));
         } else {
             std::fprintf(stderr,
-                         "usage: %s [--dist D] [--n N] [--repeats R] [--only cavity|cgal]\n",
+                         "usage: %s [--dist D] [--n N] [--repeats R] [--threads T] "
+                         "[--only cavity|cgal|cavity-threads]\n",
                          argv[0]);
             return 2;
         }
@@ -89,21 +109,25 @@ int main(int argc, char** argv) {
     const auto points =
         cavity::core::generate_points(distribution, n, 1, cavity::core::WeightSpec{});
     const std::uint64_t baseline_rss = peak_rss_bytes();
+    const char* const engines[] = {"cavity", "cgal", "cavity-threads"};
     for (int r = 0; r < repeats; ++r) {
-        // Alternate which engine goes first so neither always meets a cold cache.
-        for (int k = 0; k < 2; ++k) {
-            const bool cavity_turn = (k + r) % 2 == 0;
-            const char* engine = cavity_turn ? "cavity" : "cgal";
+        // Rotate which engine goes first so none always meets a cold cache.
+        for (int k = 0; k < 3; ++k) {
+            const std::string engine = engines[(k + r) % 3];
             if (!only.empty() && only != engine) {
                 continue;
             }
-            const Run run = cavity_turn ? run_cavity(points) : run_cgal(points);
-            std::printf("%s,%zu,%s,%d,%.6f,%zu,%llu,%llu\n",
+            const Run run = engine == "cgal"     ? run_cgal(points)
+                            : engine == "cavity" ? run_cavity(points, 0)
+                                                 : run_cavity(points, threads);
+            std::printf("%s,%zu,%s,%u,%d,%.6f,%.6f,%zu,%llu,%llu\n",
                         distribution.c_str(),
                         points.size(),
-                        engine,
+                        engine.c_str(),
+                        engine == "cavity-threads" ? threads : 1u,
                         r,
                         run.seconds,
+                        run.wall_seconds,
                         run.tets,
                         static_cast<unsigned long long>(only.empty() ? 0 : peak_rss_bytes()),
                         static_cast<unsigned long long>(baseline_rss));

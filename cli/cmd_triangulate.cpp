@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -229,6 +230,7 @@ void run_triangulate(const TriangulateArgs& args) {
     order_options.seed = args.seed;
     order_options.brio_ratio = args.brio_ratio;
     order_options.reverse_alternate_rounds = !args.no_reverse_rounds;
+    order_options.threads = std::max(1u, args.threads);
     const core::InsertionOrder order =
         naming_memory("ordering " + args.input + " (" + size + ")",
                       [&] { return core::make_insertion_order(points.points, order_options); });

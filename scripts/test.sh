@@ -6,6 +6,8 @@
 #                              after insertion batches, flips, deletions and polygons) over the
 #                              degenerate corpus, the CDT and the editing suites
 #   scripts/test.sh long       the long suites (>= 10^7 oracle queries per predicate, ...)
+#   scripts/test.sh tsan       the parallel construction's and the parallel sort's suites under
+#                              ThreadSanitizer
 set -euo pipefail
 cd "$(dirname "$0")/.."
 preset="${1:-release}"

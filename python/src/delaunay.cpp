@@ -3,6 +3,7 @@
 // arithmetic on the arrays is here: construction, exact point location, vertex neighbours,
 // incremental insertion and the exact validator, each without the GIL.
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -130,6 +131,7 @@ public:
         : input_(to_point_set(points, weights)) {
         order_options_.kind = core::parse_order_kind(order);
         order_options_.seed = seed;
+        order_options_.threads = std::max(1u, threads);
         core::TriangulateOptions options;
         options.locate = core::parse_locate_kind(locate);
         options.storage = core::parse_storage_kind(storage);

@@ -109,6 +109,18 @@ TEST(InsertionOrder, SeedsDecide) {
               make_insertion_order(cube.points, {OrderKind::kHilbert, 2}).sequence);
 }
 
+TEST(InsertionOrder, BrioIsTheSameForEveryThreadCount) {
+    const PointSet ps = generate_points("cube", 50000, 9);
+    OrderOptions options;
+    const InsertionOrder one = make_insertion_order(ps.points, options);
+    for (unsigned threads : {2u, 3u, 8u}) {
+        options.threads = threads;
+        const InsertionOrder many = make_insertion_order(ps.points, options);
+        EXPECT_EQ(many.sequence, one.sequence) << threads;
+        EXPECT_EQ(many.round_begin, one.round_begin) << threads;
+    }
+}
+
 TEST(InsertionOrder, RandomReachesEveryPermutation) {
     const std::vector<Point3> points(3, Point3{0, 0, 0});
     std::map<std::vector<std::uint32_t>, int> seen;
