@@ -17,7 +17,10 @@ namespace cavity::core {
 /// an even permutation (orientation kept) to start at the lowest id, the next slot holding the
 /// lowest of the other three; a ghost keeps the ghost vertex in slot 3 and starts at its lowest
 /// vertex. Neighbour half-facets are renumbered to follow. `mesh` is emptied; `vertices` is the
-/// number of vertex ids.
-void store_canonically(ConcurrentMesh& mesh, ArrayStorage& storage, std::size_t vertices);
+/// number of vertex ids; `threads` threads share the work.
+void store_canonically(ConcurrentMesh& mesh,
+                       ArrayStorage& storage,
+                       std::size_t vertices,
+                       unsigned threads);
 
 }  // namespace cavity::core

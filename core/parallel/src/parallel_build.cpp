@@ -232,7 +232,7 @@ ParallelBuild build_in_parallel(const Geometry& geometry,
         }
         begin = end;
     }
-    store_canonically(mesh, storage, n);
+    store_canonically(mesh, storage, n, threads);
     ParallelBuild out{interior, kNoTet, {}};
     std::vector<bool> vertex(n, false);
     for (TetId t = 0; t < storage.capacity(); ++t) {
