@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <exception>
 #include <thread>
@@ -116,6 +117,10 @@ void store_canonically(ConcurrentMesh& mesh,
     // load per neighbour when the records are renumbered.
     std::vector<std::uint32_t> top(used, 0);
     std::vector<std::uint64_t> renumber(used, 0);
+    // Counting sort on the highest rank, then the few tetrahedra sharing one by their other
+    // ranks. The threads count and place with atomic increments: the order within a bucket then
+    // depends on the interleaving, but each bucket is sorted by its keys afterwards.
+    std::vector<std::uint32_t> start(vertices + 2, 0);
     in_pieces(used, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t t = begin; t < end; ++t) {
             if (!mesh.alive(static_cast<TetId>(t))) {
@@ -123,17 +128,13 @@ void store_canonically(ConcurrentMesh& mesh,
             }
             const TetVertices& v = mesh.record(static_cast<TetId>(t)).v;
             top[t] = top_rank(v);
+            std::atomic_ref<std::uint32_t>(start[top[t] + 1])
+                .fetch_add(1, std::memory_order_relaxed);
             const Perm p = canonical_perm(v);
             renumber[t] =
                 (0u << (2 * p[0])) | (1u << (2 * p[1])) | (2u << (2 * p[2])) | (3u << (2 * p[3]));
         }
     });
-    // Counting sort on the highest rank, then the few tetrahedra sharing one by their other ranks.
-    std::vector<std::uint32_t> start(vertices + 2, 0);
-    for (std::uint32_t b : top) {
-        ++start[b + 1];
-    }
-    start[1] = 0;  // dead slots
     for (std::size_t b = 1; b < start.size(); ++b) {
         start[b] += start[b - 1];
     }
@@ -149,11 +150,16 @@ void store_canonically(ConcurrentMesh& mesh,
     std::vector<Entry> entries(live);
     {
         std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-        for (TetId t = 0; t < used; ++t) {
-            if (top[t] != 0) {
-                entries[next[top[t]]++] = {lower_key(mesh.record(t).v, top[t]), t};
+        in_pieces(used, threads, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t t = begin; t < end; ++t) {
+                if (top[t] != 0) {
+                    const std::uint32_t at = std::atomic_ref<std::uint32_t>(next[top[t]])
+                                                 .fetch_add(1, std::memory_order_relaxed);
+                    entries[at] = {lower_key(mesh.record(static_cast<TetId>(t)).v, top[t]),
+                                   static_cast<TetId>(t)};
+                }
             }
-        }
+        });
     }
     std::vector<std::uint32_t>().swap(top);
     in_pieces(vertices + 1, threads, [&](std::size_t begin, std::size_t end) {
@@ -166,11 +172,15 @@ void store_canonically(ConcurrentMesh& mesh,
         }
     });
     std::vector<std::uint32_t>().swap(start);
+    // The keys are done with: keep the old slots alone (4 bytes instead of 16 at the peak).
+    std::vector<TetId> order(live);
     in_pieces(live, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
-            renumber[entries[i].slot] |= std::uint64_t{i} << 8;
+            order[i] = entries[i].slot;
+            renumber[order[i]] |= std::uint64_t{i} << 8;
         }
     });
+    std::vector<Entry>().swap(entries);
     // Gather the records in their new order, rotated, with renumbered neighbours. (Moving them in
     // place along the permutation's cycles saves the second copy, but was measured 2x slower:
     // slots freed by a cavity are reused by later insertions, so the cycles jump across the
@@ -178,8 +188,8 @@ void store_canonically(ConcurrentMesh& mesh,
     std::vector<ArrayRecord> records(live);
     in_pieces(live, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
-            const ArrayRecord& from = mesh.record(entries[i].slot);
-            const std::uint64_t own = renumber[entries[i].slot];
+            const ArrayRecord& from = mesh.record(order[i]);
+            const std::uint64_t own = renumber[order[i]];
             ArrayRecord& r = records[i];
             for (std::size_t g = 0; g < 4; ++g) {
                 const std::size_t s = (own >> (2 * g)) & 3u;
