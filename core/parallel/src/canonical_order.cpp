@@ -80,14 +80,14 @@ std::uint32_t top_rank(const TetVertices& v) {
 
 }  // namespace
 
-/// Runs body(begin, end) on `threads` consecutive pieces of [0, count) at once; rethrows the first
-/// exception a piece threw.
+/// Runs body(k, begin, end) on the `threads` consecutive pieces k of [0, count) at once; rethrows
+/// the first exception a piece threw.
 template <class Body>
 void in_pieces(std::size_t count, unsigned threads, Body&& body) {
     std::vector<std::exception_ptr> errors(threads);
     const auto piece = [&](unsigned k) {
         try {
-            body(count * k / threads, count * (k + 1) / threads);
+            body(k, count * k / threads, count * (k + 1) / threads);
         } catch (...) {
             errors[k] = std::current_exception();
         }
@@ -106,10 +106,7 @@ void in_pieces(std::size_t count, unsigned threads, Body&& body) {
     }
 }
 
-void store_canonically(ConcurrentMesh& mesh,
-                       ArrayStorage& storage,
-                       std::size_t vertices,
-                       unsigned threads) {
+CanonicalOrder canonical_order(ConcurrentMesh& mesh, std::size_t vertices, unsigned threads) {
     const std::size_t used = mesh.used();
     // Each live slot's highest rank (its bucket; 0 marks a dead slot, as no live tetrahedron has
     // only the ghost) and, in `renumber`, its rotation stored inverted (old facet g becomes new
@@ -121,7 +118,7 @@ void store_canonically(ConcurrentMesh& mesh,
     // ranks. The threads count and place with atomic increments: the order within a bucket then
     // depends on the interleaving, but each bucket is sorted by its keys afterwards.
     std::vector<std::uint32_t> start(vertices + 2, 0);
-    in_pieces(used, threads, [&](std::size_t begin, std::size_t end) {
+    in_pieces(used, threads, [&](unsigned, std::size_t begin, std::size_t end) {
         for (std::size_t t = begin; t < end; ++t) {
             if (!mesh.alive(static_cast<TetId>(t))) {
                 continue;
@@ -150,7 +147,7 @@ void store_canonically(ConcurrentMesh& mesh,
     std::vector<Entry> entries(live);
     {
         std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-        in_pieces(used, threads, [&](std::size_t begin, std::size_t end) {
+        in_pieces(used, threads, [&](unsigned, std::size_t begin, std::size_t end) {
             for (std::size_t t = begin; t < end; ++t) {
                 if (top[t] != 0) {
                     const std::uint32_t at = std::atomic_ref<std::uint32_t>(next[top[t]])
@@ -162,7 +159,7 @@ void store_canonically(ConcurrentMesh& mesh,
         });
     }
     std::vector<std::uint32_t>().swap(top);
-    in_pieces(vertices + 1, threads, [&](std::size_t begin, std::size_t end) {
+    in_pieces(vertices + 1, threads, [&](unsigned, std::size_t begin, std::size_t end) {
         for (std::size_t b = std::max<std::size_t>(begin, 1); b < end; ++b) {
             if (start[b + 1] - start[b] > 1) {
                 std::sort(entries.begin() + start[b],
@@ -173,20 +170,32 @@ void store_canonically(ConcurrentMesh& mesh,
     });
     std::vector<std::uint32_t>().swap(start);
     // The keys are done with: keep the old slots alone (4 bytes instead of 16 at the peak).
-    std::vector<TetId> order(live);
-    in_pieces(live, threads, [&](std::size_t begin, std::size_t end) {
+    CanonicalOrder out;
+    out.order.resize(live);
+    in_pieces(live, threads, [&](unsigned, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
-            order[i] = entries[i].slot;
-            renumber[order[i]] |= std::uint64_t{i} << 8;
+            out.order[i] = entries[i].slot;
+            renumber[out.order[i]] |= std::uint64_t{i} << 8;
         }
     });
-    std::vector<Entry>().swap(entries);
+    out.renumber = std::move(renumber);
+    return out;
+}
+
+void store_canonically(ConcurrentMesh& mesh,
+                       ArrayStorage& storage,
+                       std::size_t vertices,
+                       unsigned threads) {
+    const CanonicalOrder canonical = canonical_order(mesh, vertices, threads);
+    const std::vector<TetId>& order = canonical.order;
+    const std::vector<std::uint64_t>& renumber = canonical.renumber;
+    const std::size_t live = order.size();
     // Gather the records in their new order, rotated, with renumbered neighbours. (Moving them in
     // place along the permutation's cycles saves the second copy, but was measured 2x slower:
     // slots freed by a cavity are reused by later insertions, so the cycles jump across the
     // whole array.)
     std::vector<ArrayRecord> records(live);
-    in_pieces(live, threads, [&](std::size_t begin, std::size_t end) {
+    in_pieces(live, threads, [&](unsigned, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             const ArrayRecord& from = mesh.record(order[i]);
             const std::uint64_t own = renumber[order[i]];
@@ -203,6 +212,45 @@ void store_canonically(ConcurrentMesh& mesh,
     });
     mesh.clear();
     storage.assign(std::move(records), vertices);
+}
+
+std::size_t list_canonically(ConcurrentMesh& mesh,
+                             const Geometry& geometry,
+                             unsigned threads,
+                             std::vector<std::array<std::uint32_t, 4>>& tets) {
+    const CanonicalOrder canonical = canonical_order(mesh, geometry.size(), threads);
+    const std::vector<TetId>& order = canonical.order;
+    // Each piece's solid tetrahedra are counted first, to know where its part of the list starts.
+    std::vector<std::size_t> solid_before(threads + 1, 0);
+    in_pieces(order.size(), threads, [&](unsigned k, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            solid_before[k + 1] += is_ghost(mesh.record(order[i]).v) ? 0 : 1;
+        }
+    });
+    for (unsigned k = 0; k < threads; ++k) {
+        solid_before[k + 1] += solid_before[k];
+    }
+    tets.resize(solid_before[threads]);
+    in_pieces(order.size(), threads, [&](unsigned k, std::size_t begin, std::size_t end) {
+        std::size_t at = solid_before[k];
+        for (std::size_t i = begin; i < end; ++i) {
+            const TetVertices& from = mesh.record(order[i]).v;
+            if (is_ghost(from)) {
+                continue;
+            }
+            const std::uint64_t own = canonical.renumber[order[i]];
+            TetVertices v{};
+            for (std::size_t g = 0; g < 4; ++g) {
+                v[(own >> (2 * g)) & 3u] = from[g];
+            }
+            // The stored orientation mirrored, as every list of tetrahedra is handed out
+            // (detail::drain_into, handedness.h).
+            tets[at++] = {
+                geometry.key(v[1]), geometry.key(v[0]), geometry.key(v[2]), geometry.key(v[3])};
+        }
+    });
+    mesh.clear();
+    return order.size() - tets.size();
 }
 
 }  // namespace cavity::core

@@ -42,6 +42,11 @@ public:
 
     std::size_t capacity() const { return records_.size(); }
 
+    std::size_t bytes() const {
+        return records_.capacity() * sizeof(ArrayRecord) + owner_.capacity() +
+               alive_.capacity() * sizeof(std::uint64_t);
+    }
+
     /// Slots handed out so far (every live tetrahedron is below).
     std::size_t used() const { return std::min<std::size_t>(next_.load(), capacity()); }
 

@@ -185,18 +185,16 @@ PassResult run_pass(const Geometry& geometry,
     return result;
 }
 
-}  // namespace
-
-ParallelBuild build_in_parallel(const Geometry& geometry,
-                                const ParallelOptions& options,
-                                ArrayStorage& storage) {
+/// Inserts every point of `geometry` into `mesh`; returns the bootstrap vertices.
+std::array<VertexId, 4> construct(const Geometry& geometry,
+                                  const ParallelOptions& options,
+                                  ConcurrentMesh& mesh) {
     const unsigned threads = options.threads;
     if (threads < 1 || threads > 127) {
         throw Error("the number of threads must be between 1 and 127, not " +
                     std::to_string(threads));
     }
     const std::size_t n = geometry.size();
-    ConcurrentMesh mesh;
     mesh.grow(kSlotsPerPoint * n + kSlotsPerThread * (threads + 1));
     const std::array<VertexId, 4> interior = bootstrap(geometry, mesh);
     Workers workers;
@@ -232,25 +230,61 @@ ParallelBuild build_in_parallel(const Geometry& geometry,
         }
         begin = end;
     }
-    store_canonically(mesh, storage, n, threads);
-    ParallelBuild out{interior, kNoTet, {}};
-    std::vector<bool> vertex(n, false);
-    for (TetId t = 0; t < storage.capacity(); ++t) {
-        const TetVertices& v = storage.vertices(t);
-        for (VertexId w : v) {
-            if (w != kGhostVertex) {
-                vertex[w] = true;
+    return interior;
+}
+
+/// Weighted: the vertices no live tetrahedron of `mesh` has (submerged), increasing. Unweighted
+/// every point is a vertex (detail::prepare removed the repeats), and nothing is scanned.
+std::vector<VertexId> redundant_vertices(const Geometry& geometry, ConcurrentMesh& mesh) {
+    std::vector<VertexId> redundant;
+    if (!geometry.weighted()) {
+        return redundant;
+    }
+    std::vector<bool> vertex(geometry.size(), false);
+    for (TetId t = 0; t < mesh.used(); ++t) {
+        if (mesh.alive(t)) {
+            for (VertexId w : mesh.record(t).v) {
+                if (w != kGhostVertex) {
+                    vertex[w] = true;
+                }
             }
         }
-        if (!is_ghost(v)) {
-            out.last_solid = t;
-        }
     }
-    for (VertexId v = 0; v < n; ++v) {
+    for (VertexId v = 0; v < geometry.size(); ++v) {
         if (!vertex[v]) {
-            out.redundant.push_back(v);
+            redundant.push_back(v);
         }
     }
+    return redundant;
+}
+
+}  // namespace
+
+ParallelBuild build_in_parallel(const Geometry& geometry,
+                                const ParallelOptions& options,
+                                ArrayStorage& storage) {
+    ConcurrentMesh mesh;
+    ParallelBuild out{construct(geometry, options, mesh), kNoTet, {}};
+    out.redundant = redundant_vertices(geometry, mesh);
+    store_canonically(mesh, storage, geometry.size(), options.threads);
+    for (TetId t = static_cast<TetId>(storage.capacity()); t-- > 0;) {
+        if (!is_ghost(storage.vertices(t))) {
+            out.last_solid = t;
+            break;
+        }
+    }
+    return out;
+}
+
+ParallelList list_in_parallel(const Geometry& geometry,
+                              const ParallelOptions& options,
+                              std::vector<std::array<std::uint32_t, 4>>& tets) {
+    ConcurrentMesh mesh;
+    construct(geometry, options, mesh);
+    ParallelList out;
+    out.redundant = redundant_vertices(geometry, mesh);
+    out.storage_bytes = mesh.bytes();
+    out.hull_triangles = list_canonically(mesh, geometry, options.threads, tets);
     return out;
 }
 

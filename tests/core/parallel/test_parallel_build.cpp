@@ -90,6 +90,18 @@ TEST(ParallelBuild, SameTetrahedraAsTheSequentialEngineForEveryThreadCount) {
     }
 }
 
+TEST(ParallelBuild, TheListIsTheLiveTriangulationsOrder) {
+    // triangulate() lists the tetrahedra without building the storage; the live triangulation
+    // stores them: the same canonical order either way.
+    for (const char* distribution : {"cube", "grid"}) {
+        const PointSet ps = generate_points(distribution, 30000, 8);
+        const Triangulation listed = triangulate(ps, brio(ps), with_threads(2));
+        const DelaunayTriangulation live(ps, brio(ps), with_threads(2));
+        EXPECT_EQ(live.tets(), listed.tets) << distribution;
+        EXPECT_EQ(live.hull_triangle_count(), listed.hull_triangles) << distribution;
+    }
+}
+
 TEST(ParallelBuild, CollidingThreadsInAUniformCube) {
     const PointSet ps = generate_points("cube", 3000, 2);
     const Triangulation sequential = triangulate(ps, brio(ps), TriangulateOptions{});

@@ -99,6 +99,10 @@ public:
     /// The problems found at `level` (empty: valid).
     std::vector<std::string> check(CheckLevel level) const;
 
+    /// \throws Error for options the live triangulation cannot build with: the hash storage, or
+    /// threads with counters (`counting`), a locator other than the walk, or a prefix.
+    static void require_supported(const TriangulateOptions& options, bool counting);
+
     /// Solid tetrahedra as input indices with positive right-hand volume, in storage order.
     std::vector<std::array<std::uint32_t, 4>> tets() const;
 
@@ -156,9 +160,6 @@ private:
     };
 
     void adopt(const detail::RunEnd& end, Triangulation& built);
-    /// \throws Error for options the live triangulation cannot build with: the hash storage, or
-    /// threads with counters (`counting`), a locator other than the walk, or a prefix.
-    static void require_supported(const TriangulateOptions& options, bool counting);
     /// The parallel construction (options.threads) into the state's storage.
     detail::RunEnd build_in_threads(const TriangulateOptions& options, Triangulation& built);
     static BowyerWatson<ArrayStorage, NullObserver>& engine(State& s);

@@ -3,7 +3,6 @@
 #include <cstdint>
 #include <span>
 
-#include "cavity/core/base/error.h"
 #include "cavity/core/delaunay/insertion_driver.h"
 #include "cavity/core/delaunay/triangulate.h"
 #include "cavity/core/live/delaunay_triangulation.h"
@@ -14,6 +13,16 @@
 /// as it copies, so the list costs no second copy at the peak); the book's face hash table, which
 /// cannot be kept live for flips and deletion, runs the same driver loop directly.
 namespace cavity::core {
+
+namespace detail {
+
+/// triangulate() by the parallel construction (options.threads, checked by the caller): the list
+/// of tetrahedra in the canonical order, without building the live storage.
+Triangulation triangulate_in_parallel(const PointSet& points,
+                                      std::span<const std::uint32_t> sequence,
+                                      const TriangulateOptions& options);
+
+}  // namespace detail
 
 /// Triangulates `points` inserting them in `sequence` (a permutation of all input indices, e.g.
 /// from make_insertion_order). Exact for every finite double input.
@@ -35,11 +44,12 @@ Triangulation triangulate_observed(const PointSet& points,
                                    std::span<const std::uint32_t> sequence,
                                    const TriangulateOptions& options,
                                    Observer& observer) {
+    if (options.threads > 0) {
+        DelaunayTriangulation::require_supported(options, Observer::kCounting);
+        return detail::triangulate_in_parallel(points, sequence, options);
+    }
     if (options.storage == StorageKind::kArray) {
         return DelaunayTriangulation(points, sequence, options, observer).release();
-    }
-    if (options.threads > 0) {
-        throw Error("the parallel construction uses the array storage, not the hash storage");
     }
     Triangulation out;
     const detail::Prepared prep = detail::prepare(points, sequence, options.bootstrap, out);
