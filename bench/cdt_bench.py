@@ -300,8 +300,11 @@ def collect(extra, limit_faces, include_open):
 def run(cmd, cwd, timeout):
     """(exit status or None on timeout, wall seconds, output); the process group is ended on timeout."""
     start = time.monotonic()
-    p = subprocess.Popen(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                         start_new_session=True)
+    try:
+        p = subprocess.Popen(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                             start_new_session=True)
+    except OSError as e:
+        return -1000, 0.0, f"could not run {cmd[0]}: {e.strerror}"
     try:
         out, _ = p.communicate(timeout=timeout)
         return p.returncode, time.monotonic() - start, out.decode("utf-8", "replace")
@@ -387,15 +390,23 @@ def tetgen_check_poly(d, stem):
 def run_tetgen(tetgen, cavity, poly, points, switches, d, timeout):
     os.makedirs(d, exist_ok=True)
     shutil.copy(poly, os.path.join(d, "in.poly"))
-    rc, secs, out = run([tetgen, switches + "Q", "in.poly"], d, timeout)
+    # not quiet, line-buffered: the Debian build aborts on bad input (an uncaught int) without a word,
+    # and the phase it was in and its warnings are the only clue
+    rc, secs, out = run(["stdbuf", "-oL", tetgen, switches, "in.poly"], d, timeout)
     row = {"seconds": f"{secs:.3f}"}
     if rc is None:
         return dict(row, status="timeout", reason=f"over {timeout:g} s")
     ele = os.path.join(d, "in.1.ele")
     if rc != 0 or not os.path.exists(ele):
         status = "refused" if rc in (0, 1, -6, 134) else f"crashed (exit {rc})"
-        reason = first_line(out, ("Error", "error", "intersect", "Warning", "terminate"))
-        return dict(row, status=status, reason=reason[:200] or f"exit {rc}, no mesh")
+        lines = [ln.strip() for ln in out.splitlines() if ln.strip()]
+        said = [ln for ln in lines if re.match(r"(Warning|Error|!!)", ln)]
+        phase = [ln for ln in lines if ln.endswith("...")]
+        reason = (said[0] if said else "") + (f" (aborted in: {phase[-1]})" if phase else f" (exit {rc})")
+        drc, _, dout = run(["stdbuf", "-oL", tetgen, "-d", "in.poly"], d, timeout)
+        found = [ln.strip() for ln in dout.splitlines() if ln.strip().startswith("!!") or "Found" in ln]
+        reason += "; tetgen -d: " + (found[0].lstrip("! ") if found else f"reports no intersection (exit {drc})")
+        return dict(row, status=status, reason=reason.strip()[:200])
     nodes = count_header(os.path.join(d, "in.1.node"))
     row.update(status="meshed", reason="", steiner=str(nodes - points), tets=str(count_header(ele)))
     tetgen_check_poly(d, "in.1")
@@ -472,7 +483,7 @@ def report(rows, models, args, elapsed, load):
     for m in run_names:
         r = by.get((m, "cavity --protect"))
         if r and r["status"] == "refused":
-            why = re.sub(r"^cavity: [^:]*: ", "", r["reason"])
+            why = re.sub(r"^cavity: [^:\s]*(:\d+)?: ", "", r["reason"])
             reasons[re.sub(r"-?\b\d+(\.\d+)?(e-?\d+)?\b", "N", why)[:110]] += 1
     if reasons:
         p("\nWhy `cavity cdt --protect` refused (numbers replaced by N):\n")
@@ -521,6 +532,9 @@ def main():
     ap.add_argument("--keep", action="store_true", help="keep the work directory (printed) with every output")
     args = ap.parse_args()
     args.passed = sys.argv[1:]
+    if args.cavity == ap.get_default("cavity") and "--cavity" in args.passed:  # as the wrapper passes it
+        k = args.passed.index("--cavity")
+        del args.passed[k:k + 2]
     tools = [t.strip() for t in args.tools.split(",")]
     for t in tools:
         if t not in TOOLS:
