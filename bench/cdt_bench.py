@@ -1,0 +1,592 @@
+"""cavity cdt beside TetGen on real closed surface meshes; writes results/cdt/cdt.csv and README.md.
+
+The models are the ones Debian packages ship (none of them written on this project): CGAL's data
+meshes (libcgal-demo, data.tar.gz: data/meshes/) and OpenSCAD's test STL files
+(openscad-testing-data). Nothing is copied into the repository: the script reads them from the
+installed packages, or from --models. Each model is read here only to classify it (closed: every
+edge in exactly two facets, no facet repeating a vertex) and to convert it to a TetGen .poly;
+`cavity cdt` is given the original file, which it reads itself.
+
+Per model and tool (cavity cdt, cavity cdt --protect, tetgen -p, tetgen -pY), one CSV row: status
+(meshed / refused / timeout / crashed), the first line of the reason, wall seconds, Steiner points,
+tetrahedra, and `cavity check --poly` on the output. TetGen's output is checked against the PLC
+it conforms to: its output points with its output boundary triangles (the .1.face file), the
+same kind of PLC that `cavity cdt` writes as PREFIX.poly.
+
+Run it through bench/run_cdt_bench.sh, which installs the packages and builds cavity.
+"""
+import argparse
+import csv
+import hashlib
+import io
+import os
+import re
+import shutil
+import signal
+import struct
+import subprocess
+import sys
+import tarfile
+import tempfile
+import time
+from collections import Counter
+
+CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
+OPENSCAD_DATA = "/usr/share/openscad"
+EXTENSIONS = (".off", ".stl", ".obj", ".ply")
+TOOLS = ["cavity", "cavity --protect", "tetgen -p", "tetgen -pY"]
+
+
+class MeshError(Exception):
+    pass
+
+
+# ---------------------------------------------------------------- readers (classification only)
+
+def _tokens_no_comments(text):
+    for line in text.splitlines():
+        line = line.split("#", 1)[0].strip()
+        if line:
+            yield line
+
+
+def read_off(data):
+    lines = list(_tokens_no_comments(data.decode("latin-1")))
+    if not lines:
+        raise MeshError("empty file")
+    head = lines[0].split()
+    if not head[0].endswith("OFF"):
+        raise MeshError("no OFF header")
+    if head[0] not in ("OFF", "COFF", "NOFF", "CNOFF"):  # colours and normals follow x y z
+        raise MeshError(f"unsupported OFF variant {head[0]}")
+    if len(head) > 1:  # "OFF nv nf ne" on one line
+        counts, body = head[1:], lines[1:]
+    elif len(lines) > 1:
+        counts, body = lines[1].split(), lines[2:]
+    else:
+        raise MeshError("no OFF counts")
+    try:
+        nv, nf = int(counts[0]), int(counts[1])
+    except (IndexError, ValueError):
+        raise MeshError("bad OFF counts")
+    if len(body) < nv + nf:
+        raise MeshError("truncated OFF")
+    verts = [tuple(float(x) for x in body[k].split()[:3]) for k in range(nv)]
+    faces = []
+    for k in range(nv, nv + nf):
+        w = body[k].split()
+        n = int(w[0])
+        faces.append([int(x) for x in w[1:1 + n]])
+    return verts, faces
+
+
+def read_stl(data):
+    if len(data) >= 84:
+        n = struct.unpack_from("<I", data, 80)[0]
+        if 84 + 50 * n == len(data):
+            verts, faces = [], []
+            for k in range(n):
+                v = struct.unpack_from("<12f", data, 84 + 50 * k)
+                f = []
+                for j in range(3):
+                    verts.append(v[3 + 3 * j:6 + 3 * j])
+                    f.append(len(verts) - 1)
+                faces.append(f)
+            return weld(verts, faces)
+    text = data.decode("latin-1")
+    if not text.lstrip().startswith("solid"):
+        raise MeshError("neither ASCII nor binary STL")
+    verts, faces, cur = [], [], []
+    for line in text.splitlines():
+        w = line.split()
+        if not w:
+            continue
+        if w[0] == "vertex":
+            if len(w) != 4:
+                raise MeshError("bad STL vertex line")
+            verts.append(tuple(float(x) for x in w[1:4]))
+            cur.append(len(verts) - 1)
+        elif w[0] == "endloop":
+            faces.append(cur)
+            cur = []
+    if not faces:
+        raise MeshError("no facets")
+    return weld(verts, faces)
+
+
+def weld(verts, faces):
+    """STL lists each triangle's corners: identical coordinates are one vertex."""
+    index, out = {}, []
+    remap = []
+    for v in verts:
+        if v not in index:
+            index[v] = len(out)
+            out.append(v)
+        remap.append(index[v])
+    return out, [[remap[i] for i in f] for f in faces]
+
+
+def read_obj(data):
+    verts, faces = [], []
+    for line in data.decode("latin-1").splitlines():
+        w = line.split()
+        if not w:
+            continue
+        if w[0] == "v":
+            verts.append(tuple(float(x) for x in w[1:4]))
+        elif w[0] == "f":
+            f = []
+            for t in w[1:]:
+                i = int(t.split("/")[0])
+                f.append(i - 1 if i > 0 else len(verts) + i)
+            faces.append(f)
+    return verts, faces
+
+
+PLY_TYPES = {"char": "b", "int8": "b", "uchar": "B", "uint8": "B", "short": "h", "int16": "h",
+             "ushort": "H", "uint16": "H", "int": "i", "int32": "i", "uint": "I", "uint32": "I",
+             "float": "f", "float32": "f", "double": "d", "float64": "d"}
+
+
+def read_ply(data):
+    end = data.find(b"end_header")
+    if not data.startswith(b"ply") or end < 0:
+        raise MeshError("no PLY header")
+    header = data[:end].decode("latin-1").splitlines()
+    body = data[data.index(b"\n", end) + 1:]
+    fmt, elements = None, []
+    for line in header:
+        w = line.split()
+        if not w:
+            continue
+        if w[0] == "format":
+            fmt = w[1]
+        elif w[0] == "element":
+            elements.append((w[1], int(w[2]), []))
+        elif w[0] == "property":
+            elements[-1][2].append(w[1:])
+    if fmt not in ("ascii", "binary_little_endian", "binary_big_endian"):
+        raise MeshError(f"unsupported PLY format {fmt}")
+    verts, faces = [], []
+    if fmt == "ascii":
+        words = body.decode("latin-1").split()
+        pos = 0
+
+        def take(_t):
+            nonlocal pos
+            pos += 1
+            return float(words[pos - 1])
+    else:
+        order = "<" if fmt == "binary_little_endian" else ">"
+        pos = 0
+
+        def take(t):
+            nonlocal pos
+            code = order + PLY_TYPES[t]
+            v = struct.unpack_from(code, body, pos)[0]
+            pos += struct.calcsize(code)
+            return v
+    for name, count, props in elements:
+        for _ in range(count):
+            row = {}
+            for p in props:
+                if p[0] == "list":
+                    n = int(take(p[1]))
+                    row[p[3]] = [int(take(p[2])) for _ in range(n)]
+                else:
+                    row[p[1]] = take(p[0])
+            if name == "vertex":
+                verts.append((row["x"], row["y"], row["z"]))
+            elif name == "face":
+                faces.append(row.get("vertex_indices", row.get("vertex_index")))
+    return verts, faces
+
+
+def read_mesh(path):
+    data = open(path, "rb").read()
+    ext = os.path.splitext(path)[1].lower()
+    try:
+        return {".off": read_off, ".stl": read_stl, ".obj": read_obj, ".ply": read_ply}[ext](data)
+    except (ValueError, IndexError, KeyError, struct.error, TypeError) as e:
+        raise MeshError(f"unreadable ({type(e).__name__})")
+
+
+def classify(verts, faces):
+    """'' for a closed mesh, else why not: the script's own combinatorial test."""
+    if not faces:
+        return "no facets"
+    edges = Counter()
+    for f in faces:
+        if len(f) < 3 or len(set(f)) != len(f):
+            return "a facet repeats a vertex"
+        if any(i < 0 or i >= len(verts) for i in f):
+            return "a facet index out of range"
+        for a, b in zip(f, f[1:] + f[:1]):
+            edges[(min(a, b), max(a, b))] += 1
+    if any(c == 1 for c in edges.values()):
+        return "open (boundary edges)"
+    if any(c > 2 for c in edges.values()):
+        return "non-manifold edges"
+    return ""
+
+
+def write_poly(path, verts, faces):
+    """TetGen .poly of the mesh's facets, 1-based, unreferenced vertices dropped."""
+    used = sorted({i for f in faces for i in f})
+    renum = {old: k + 1 for k, old in enumerate(used)}
+    with open(path, "w") as out:
+        out.write(f"{len(used)} 3 0 0\n")
+        for old in used:
+            x, y, z = verts[old]
+            out.write(f"{renum[old]} {x!r} {y!r} {z!r}\n")
+        out.write(f"{len(faces)} 0\n")
+        for f in faces:
+            out.write("1\n" + f"{len(f)} " + " ".join(str(renum[i]) for i in f) + "\n")
+        out.write("0\n0\n")
+    return len(used)
+
+
+# ---------------------------------------------------------------- corpus
+
+def collect(extra, limit_faces, include_open):
+    """(name, path, facets, points or None, reason-not-run) per model, duplicates by content dropped."""
+    work = tempfile.mkdtemp(prefix="cdt-bench-models-")
+    sources = []
+    if os.path.exists(CGAL_DATA):
+        with tarfile.open(CGAL_DATA) as tar:
+            for m in tar.getmembers():
+                if m.isfile() and m.name.startswith("data/meshes/") and m.name.lower().endswith(EXTENSIONS):
+                    dest = os.path.join(work, "cgal", os.path.basename(m.name))
+                    os.makedirs(os.path.dirname(dest), exist_ok=True)
+                    with tar.extractfile(m) as src, open(dest, "wb") as out:
+                        shutil.copyfileobj(src, out)
+                    sources.append(("cgal/" + os.path.basename(m.name), dest))
+    for root, _, files in sorted(os.walk(OPENSCAD_DATA)):
+        for f in sorted(files):
+            if f.lower().endswith(EXTENSIONS):
+                p = os.path.join(root, f)
+                sources.append(("openscad/" + os.path.relpath(p, OPENSCAD_DATA), p))
+    for e in extra:
+        paths = [e] if os.path.isfile(e) else [os.path.join(r, f) for r, _, fs in sorted(os.walk(e))
+                                                for f in sorted(fs) if f.lower().endswith(EXTENSIONS)]
+        sources += [("extra/" + os.path.basename(p), p) for p in paths]
+    seen, models = {}, []
+    for name, path in sorted(sources):
+        digest = hashlib.sha256(open(path, "rb").read()).hexdigest()
+        if digest in seen:
+            models.append((name, path, 0, None, f"same file as {seen[digest]}"))
+            continue
+        seen[digest] = name
+        try:
+            verts, faces = read_mesh(path)
+            why = classify(verts, faces)
+        except MeshError as e:
+            models.append((name, path, 0, None, str(e)))
+            continue
+        if why and not include_open:
+            models.append((name, path, len(faces), None, why))
+        elif limit_faces and len(faces) > limit_faces:
+            models.append((name, path, len(faces), None, f"over --max-faces ({len(faces)} facets)"))
+        else:
+            poly = os.path.join(work, "poly", hashlib.sha1(name.encode()).hexdigest()[:12] + ".poly")
+            os.makedirs(os.path.dirname(poly), exist_ok=True)
+            points = write_poly(poly, verts, faces)
+            models.append((name, path, len(faces), (poly, points), ""))
+    return work, models
+
+
+# ---------------------------------------------------------------- running
+
+def run(cmd, cwd, timeout):
+    """(exit status or None on timeout, wall seconds, output); the process group is ended on timeout."""
+    start = time.monotonic()
+    try:
+        p = subprocess.Popen(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                             start_new_session=True)
+    except OSError as e:
+        return -1000, 0.0, f"could not run {cmd[0]}: {e.strerror}"
+    try:
+        out, _ = p.communicate(timeout=timeout)
+        return p.returncode, time.monotonic() - start, out.decode("utf-8", "replace")
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        p.communicate()
+        return None, time.monotonic() - start, ""
+
+
+def first_line(text, prefer=()):
+    """The first line of the reason (with the preferred key), and the line after it when it ends in ':'."""
+    lines = [ln.strip() for ln in text.splitlines() if ln.strip()]
+    at = 0
+    for key in prefer:
+        hits = [k for k, ln in enumerate(lines) if key in ln]
+        if hits:
+            at = hits[0]
+            break
+    if not lines:
+        return ""
+    line = lines[at]
+    if line.endswith(":") and at + 1 < len(lines):
+        line += " " + lines[at + 1]
+    return line
+
+
+def count_header(path):
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0].split()
+            if line:
+                return int(line[0])
+    return 0
+
+
+def check(cavity, poly, node, ele, cwd, timeout):
+    rc, secs, out = run([cavity, "check", "--quiet", "--poly", poly, node, ele], cwd, timeout)
+    if rc is None:
+        return "check timeout", secs
+    if rc == 0:
+        return "valid", secs
+    return "INVALID: " + first_line(out)[:200], secs
+
+
+def run_cavity(cavity, model, protect, d, timeout):
+    os.makedirs(d, exist_ok=True)
+    cmd = [cavity, "cdt"] + (["--protect"] if protect else []) + [os.path.abspath(model), "-o", "out"]
+    rc, secs, out = run(cmd, d, timeout)
+    row = {"seconds": f"{secs:.3f}"}
+    if rc is None:
+        return dict(row, status="timeout", reason=f"over {timeout:g} s")
+    if rc != 0:
+        status = "refused" if rc == 1 else f"crashed (exit {rc})"
+        reason = first_line(out, ("cavity:",)).replace(os.path.abspath(model), os.path.basename(model))
+        return dict(row, status=status, reason=reason[:200])
+    m = re.search(r"(\d+) points \((\d+) inserted for protection\)", out)
+    k = re.search(r"(\d+) tetrahedra kept", out)
+    row.update(status="meshed", reason="", steiner=m.group(2) if m else "?",
+               tets=k.group(1) if k else str(count_header(os.path.join(d, "out.ele"))))
+    row["check"], row["check_seconds"] = check(cavity, "out.poly", "out.node", "out.ele", d, timeout)
+    row["check_seconds"] = f"{row['check_seconds']:.3f}"
+    return row
+
+
+def tetgen_check_poly(d, stem):
+    """The PLC TetGen's mesh conforms to: its output points and its output boundary triangles."""
+    node, face = os.path.join(d, stem + ".node"), os.path.join(d, stem + ".face")
+    with open(face) as f:
+        rows = [ln.split("#", 1)[0].split() for ln in f]
+    rows = [r for r in rows if r]
+    n = int(rows[0][0])
+    tris = [r[1:4] for r in rows[1:1 + n]]
+    with open(node) as f:
+        nodes = [ln for ln in f if ln.split("#", 1)[0].strip()]
+    with open(os.path.join(d, "check.poly"), "w") as out:
+        out.writelines(nodes)
+        out.write(f"{len(tris)} 0\n")
+        for t in tris:
+            out.write("1\n3 " + " ".join(t) + "\n")
+        out.write("0\n0\n")
+
+
+def run_tetgen(tetgen, cavity, poly, points, switches, d, timeout):
+    os.makedirs(d, exist_ok=True)
+    shutil.copy(poly, os.path.join(d, "in.poly"))
+    # not quiet, line-buffered: the Debian build aborts on bad input (an uncaught int) without a word,
+    # and the phase it was in and its warnings are the only clue
+    rc, secs, out = run(["stdbuf", "-oL", tetgen, switches, "in.poly"], d, timeout)
+    row = {"seconds": f"{secs:.3f}"}
+    if rc is None:
+        return dict(row, status="timeout", reason=f"over {timeout:g} s")
+    ele = os.path.join(d, "in.1.ele")
+    if rc != 0 or not os.path.exists(ele):
+        status = "refused" if rc in (0, 1, -6, 134) else f"crashed (exit {rc})"
+        lines = [ln.strip() for ln in out.splitlines() if ln.strip()]
+        said = [ln for ln in lines if re.match(r"(Warning|Error|!!)", ln)]
+        phase = [ln for ln in lines if ln.endswith("...")]
+        reason = (said[0] if said else "") + (f" (aborted in: {phase[-1]})" if phase else f" (exit {rc})")
+        drc, _, dout = run(["stdbuf", "-oL", tetgen, "-d", "in.poly"], d, timeout)
+        found = [ln.strip() for ln in dout.splitlines() if ln.strip().startswith("!!") or "Found" in ln]
+        reason += "; tetgen -d: " + (found[0].lstrip("! ") if found else f"reports no intersection (exit {drc})")
+        return dict(row, status=status, reason=reason.strip()[:200])
+    nodes = count_header(os.path.join(d, "in.1.node"))
+    row.update(status="meshed", reason="", steiner=str(nodes - points), tets=str(count_header(ele)))
+    tetgen_check_poly(d, "in.1")
+    row["check"], secs = check(cavity, "check.poly", "in.1.node", "in.1.ele", d, timeout)
+    row["check_seconds"] = f"{secs:.3f}"
+    return row
+
+
+# ---------------------------------------------------------------- report
+
+def fmt_row(r):
+    if r["status"] == "meshed":
+        ok = "valid" if r["check"] == "valid" else "**" + r["check"].split(":")[0] + "** (" + \
+            r["check"].rsplit(": ", 1)[-1].replace("|", "\\|")[:70] + ")"
+        return f"{r['seconds']} s, +{r['steiner']}, {r['tets']} tets, {ok}"
+    if r["status"] == "timeout":
+        return "timeout"
+    reason = r["reason"].replace("|", "\\|")
+    if len(reason) > 90:
+        reason = reason[:87] + "..."
+    return f"{r['status']}: {reason}"
+
+
+def report(rows, models, args, elapsed, load):
+    run_names = [m[0] for m in models if m[3] is not None]
+    skipped = [m for m in models if m[3] is None]
+    by = {(r["model"], r["tool"]): r for r in rows}
+    out = io.StringIO()
+    p = lambda s="": out.write(s + "\n")  # noqa: E731
+    p("# cavity cdt beside TetGen on real surface meshes\n")
+    p(f"Made by `bench/run_cdt_bench.sh{(' ' + ' '.join(args.passed)) if args.passed else ''}` "
+      f"(`bench/cdt_bench.py`; every number on this page is written by it from `cdt.csv`). "
+      f"Models: the closed surface meshes shipped by the Debian packages libcgal-demo (CGAL's "
+      f"`data/meshes/`) and openscad-testing-data (OpenSCAD's test STL files), read from the installed "
+      f"packages, none written on this project; duplicates by content, models that are not closed "
+      f"(every edge in exactly two facets) and models over {args.max_faces} facets are left out "
+      f"(listed below). `cavity cdt` reads each file itself; TetGen {tetgen_version()} gets the "
+      f"script's conversion to `.poly`. Time limit {args.timeout:g} s per run; wall times on a shared "
+      f"2-core machine (load average at the start: {load}). The whole run took {elapsed:.0f} s.\n")
+    p("Steiner points: for cavity, the points it inserted for edge protection (its summary line); for "
+      "TetGen, points in its `.node` output minus points in the `.poly`. Tetrahedra: of the carved "
+      "domain. Validation: `cavity check --poly` (exact) of the mesh against the PLC it conforms to: "
+      "cavity's `PREFIX.poly`; for TetGen, its output points with its output boundary triangles "
+      "(`.1.face`), so rounded Steiner points are checked as the doubles TetGen wrote.\n")
+    p("## Summary\n")
+    p(f"{len(run_names)} models run; {len(skipped)} files left out.\n")
+    p("| tool | meshed | valid (of meshed) | refused | timeout | crashed | Steiner points (all meshed) | "
+      "median wall s (meshed) |")
+    p("|---|---|---|---|---|---|---|---|")
+    for tool in TOOLS:
+        rs = [by[(m, tool)] for m in run_names if (m, tool) in by]
+        meshed = [r for r in rs if r["status"] == "meshed"]
+        times = sorted(float(r["seconds"]) for r in meshed)
+        med = f"{times[len(times) // 2]:.3f}" if times else "–"
+        steiner = sum(int(r["steiner"]) for r in meshed if r["steiner"].isdigit())
+        p(f"| `{tool}` | {len(meshed)} of {len(rs)} | {sum(r['check'] == 'valid' for r in meshed)} | "
+          f"{sum(r['status'] == 'refused' for r in rs)} | {sum(r['status'] == 'timeout' for r in rs)} | "
+          f"{sum(r['status'].startswith('crashed') for r in rs)} | {steiner} | {med} |")
+    p()
+    pairs = [("cavity --protect", "tetgen -p"), ("cavity", "tetgen -p"), ("cavity --protect", "tetgen -pY")]
+    for a, b in pairs:
+        both = [m for m in run_names if by.get((m, a), {}).get("status") == "meshed"
+                and by.get((m, b), {}).get("status") == "meshed"]
+        if not both:
+            p(f"- `{a}` and `{b}` mesh no model in common.")
+            continue
+        sa = sum(int(by[(m, a)]["steiner"]) for m in both)
+        sb = sum(int(by[(m, b)]["steiner"]) for m in both)
+        ta = sum(float(by[(m, a)]["seconds"]) for m in both)
+        tb = sum(float(by[(m, b)]["seconds"]) for m in both)
+        p(f"- On the {len(both)} models both `{a}` and `{b}` mesh: Steiner points {sa} against {sb}; "
+          f"total wall time {ta:.2f} s against {tb:.2f} s (ratio {ta / tb:.2f}).")
+    reasons = Counter()
+    for m in run_names:
+        r = by.get((m, "cavity --protect"))
+        if r and r["status"] == "refused":
+            why = re.sub(r"^cavity: [^:\s]*(:\d+)?: ", "", r["reason"])
+            reasons[re.sub(r"-?\b\d+(\.\d+)?(e-?\d+)?\b", "N", why)[:110]] += 1
+    if reasons:
+        p("\nWhy `cavity cdt --protect` refused (numbers replaced by N):\n")
+        for why, n in reasons.most_common(8):
+            p(f"- {n} × {why}")
+    p("\n## Per model\n")
+    p("Each cell: wall seconds, +Steiner points, tetrahedra, validation; or the status and the first "
+      "line of the reason.\n")
+    p("| model | facets | " + " | ".join(f"`{t}`" for t in TOOLS) + " |")
+    p("|---|---" + "|---" * len(TOOLS) + "|")
+    for name, _, nf, poly, _ in models:
+        if poly is None:
+            continue
+        p(f"| {name} | {nf} | " + " | ".join(fmt_row(by[(name, t)]) if (name, t) in by else "–"
+                                             for t in TOOLS) + " |")
+    p("\n## Left out\n")
+    for why, n in Counter(re.sub(r"\(\d+ facets\)", "", m[4]).strip() if not m[4].startswith("same file")
+                          else "duplicate of another model" for m in skipped).most_common():
+        p(f"- {n} × {why}")
+    p("\n" + ", ".join(f"{m[0]} ({m[4]})" for m in skipped) + ".")
+    return out.getvalue()
+
+
+def tetgen_version():
+    try:
+        out = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "tetgen"], capture_output=True, text=True)
+        return out.stdout.strip() or "(version unknown)"
+    except OSError:
+        return "(version unknown)"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--timeout", type=float, default=120, help="seconds per run of a tool or check (default 120)")
+    ap.add_argument("--max-faces", type=int, default=20000,
+                    help="leave out models with more facets (default 20000; 0: no limit)")
+    ap.add_argument("--limit", type=int, default=0, help="run only the first N models (by name; default all)")
+    ap.add_argument("--tools", default=",".join(TOOLS),
+                    help=f"comma-separated subset of: {', '.join(TOOLS)}")
+    ap.add_argument("--models", action="append", default=[],
+                    help="also a surface-mesh file or a directory of them (repeatable)")
+    ap.add_argument("--all", action="store_true", help="also run models that are not closed")
+    ap.add_argument("--cavity", default="build/release/cli/cavity", help="the cavity binary")
+    ap.add_argument("--tetgen", default="/usr/bin/tetgen", help="the TetGen binary")
+    ap.add_argument("--out", default="results/cdt", help="where cdt.csv and README.md are written")
+    ap.add_argument("--keep", action="store_true", help="keep the work directory (printed) with every output")
+    args = ap.parse_args()
+    args.passed = sys.argv[1:]
+    if args.cavity == ap.get_default("cavity") and "--cavity" in args.passed:  # as the wrapper passes it
+        k = args.passed.index("--cavity")
+        del args.passed[k:k + 2]
+    tools = [t.strip() for t in args.tools.split(",")]
+    for t in tools:
+        if t not in TOOLS:
+            ap.error(f"unknown tool {t!r} in --tools (known: {', '.join(TOOLS)})")
+    for b in (args.cavity, args.tetgen):
+        if not os.access(b, os.X_OK):
+            sys.exit(f"cdt_bench: {b} is not an executable (build cavity, install tetgen: bench/run_cdt_bench.sh)")
+    if not os.path.exists(CGAL_DATA) and not os.path.isdir(OPENSCAD_DATA) and not args.models:
+        sys.exit("cdt_bench: no models: install libcgal-demo and openscad-testing-data, or give --models")
+    args.cavity = os.path.abspath(args.cavity)
+    load = os.getloadavg()
+    load = f"{load[0]:.1f}"
+    start = time.monotonic()
+    work, models = collect(args.models, args.max_faces, args.all)
+    runnable = [m for m in models if m[3] is not None]
+    if args.limit:
+        keep = {m[0] for m in runnable[:args.limit]}
+        models = [m if m[3] is None or m[0] in keep else (m[0], m[1], m[2], None, "over --limit")
+                  for m in models]
+        runnable = [m for m in runnable if m[0] in keep]
+    rows = []
+    for k, (name, path, nf, (poly, points), _) in enumerate(runnable):
+        base = os.path.join(work, "run", f"{k:03d}")
+        for tool in tools:
+            d = os.path.join(base, tool.replace(" ", "").replace("-", "_"))
+            if tool.startswith("cavity"):
+                r = run_cavity(args.cavity, path, "--protect" in tool, d, args.timeout)
+            else:
+                r = run_tetgen(args.tetgen, args.cavity, poly, points, tool.split()[1].lstrip("-"), d,
+                               args.timeout)
+            r.update(model=name, facets=nf, points=points, tool=tool)
+            rows.append(r)
+            print(f"[{k + 1}/{len(runnable)}] {name} {tool}: {r['status']} {r['seconds']} s "
+                  f"{r.get('check', '')} {r.get('reason', '')[:100]}", file=sys.stderr, flush=True)
+        if not args.keep:
+            shutil.rmtree(base, ignore_errors=True)
+    elapsed = time.monotonic() - start
+    os.makedirs(args.out, exist_ok=True)
+    fields = ["model", "facets", "points", "tool", "status", "reason", "seconds", "steiner", "tets",
+              "check", "check_seconds"]
+    with open(os.path.join(args.out, "cdt.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields, restval="")
+        w.writeheader()
+        w.writerows(rows)
+    with open(os.path.join(args.out, "README.md"), "w") as f:
+        f.write(report(rows, models, args, elapsed, load))
+    if args.keep:
+        print(f"cdt_bench: outputs kept in {work}", file=sys.stderr)
+    else:
+        shutil.rmtree(work, ignore_errors=True)
+    print(f"cdt_bench: wrote {args.out}/cdt.csv and {args.out}/README.md ({elapsed:.0f} s)", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
