@@ -6,24 +6,13 @@
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/io/atomic_file.h"
+#include "file_extension.h"
 #include "point_readers.h"
 #include "point_writers.h"
 #include "text_input.h"
 #include "text_output.h"
 
 namespace cavity::core {
-
-namespace {
-
-std::string lower_extension(const std::filesystem::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) {
-        return static_cast<char>(std::tolower(c));
-    });
-    return extension;
-}
-
-}  // namespace
 
 void write_node(AtomicFileGroup::Writer& out, const PointSet& points) {
     // A .node input's attributes and markers are written back as read (the weight among them,

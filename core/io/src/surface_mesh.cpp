@@ -5,22 +5,11 @@
 #include <string>
 
 #include "cavity/core/base/error.h"
+#include "file_extension.h"
 #include "surface_readers.h"
 #include "text_input.h"
 
 namespace cavity::core {
-
-namespace {
-
-std::string lower_extension(const std::filesystem::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) {
-        return static_cast<char>(std::tolower(c));
-    });
-    return extension;
-}
-
-}  // namespace
 
 bool is_surface_mesh_file(const std::filesystem::path& file) {
     const std::string extension = lower_extension(file);
