@@ -1,0 +1,91 @@
+#pragma once
+
+#include <array>
+#include <type_traits>
+#include <variant>
+
+#include "cavity/predicates/generic_point.h"
+
+// Homogeneous coordinates of generic points and the two determinants the predicates take of them,
+// written once over a number type T (an interval for the filter, an exact integer behind it). T
+// needs +, - (binary and unary), * and construction from what `coordinate` and `parameter` return.
+namespace cavity::predicates::detail {
+
+template <class T>
+struct Homogeneous {
+    T x;
+    T y;
+    T z;
+    T w;
+};
+
+/// The homogeneous coordinates of g as in generic_point.h. `coordinate` maps a double coordinate
+/// of a defining point to T, `parameter` a double of a SegmentParameterPoint's parameter; each
+/// may scale by its own positive constant (the exact stage scales to integers), since scaling all
+/// coordinates scales the configuration, which keeps the predicates' signs, and scaling the
+/// parameter's numerator and denominator together scales one point's (X, Y, Z, W), which keeps
+/// the point.
+template <class T, class Coordinate, class Parameter>
+Homogeneous<T> homogeneous(const GenericPoint3& g, Coordinate coordinate, Parameter parameter) {
+    const auto lift = [&](const Point3& p) {
+        return std::array<T, 3>{T(coordinate(p.x)), T(coordinate(p.y)), T(coordinate(p.z))};
+    };
+    const auto minus = [](const std::array<T, 3>& u, const std::array<T, 3>& v) {
+        return std::array<T, 3>{T(u[0] - v[0]), T(u[1] - v[1]), T(u[2] - v[2])};
+    };
+    if (const auto* p = std::get_if<Point3>(&g)) {
+        const std::array<T, 3> c = lift(*p);
+        return {c[0], c[1], c[2], T(1)};
+    }
+    if (const auto* s = std::get_if<SegmentParameterPoint>(&g)) {
+        const std::array<T, 3> a = lift(s->a);
+        const std::array<T, 3> d = minus(lift(s->b), a);
+        const T num(parameter(s->numerator));
+        const T den(parameter(s->denominator));
+        return {T(den * a[0] + num * d[0]),
+                T(den * a[1] + num * d[1]),
+                T(den * a[2] + num * d[2]),
+                den};
+    }
+    const auto& l = std::get<LinePlanePoint>(g);
+    const std::array<T, 3> a = lift(l.a);
+    const std::array<T, 3> p = lift(l.p);
+    const std::array<T, 3> d = minus(lift(l.b), a);
+    const std::array<T, 3> u = minus(lift(l.q), p);
+    const std::array<T, 3> v = minus(lift(l.r), p);
+    const std::array<T, 3> n{
+        T(u[1] * v[2] - u[2] * v[1]), T(u[2] * v[0] - u[0] * v[2]), T(u[0] * v[1] - u[1] * v[0])};
+    const std::array<T, 3> pa = minus(p, a);
+    const T w(n[0] * d[0] + n[1] * d[1] + n[2] * d[2]);
+    const T s(n[0] * pa[0] + n[1] * pa[1] + n[2] * pa[2]);
+    return {T(w * a[0] + s * d[0]), T(w * a[1] + s * d[1]), T(w * a[2] + s * d[2]), w};
+}
+
+template <class T, std::size_t N>
+using Matrix = std::array<std::array<T, N>, N>;
+
+/// det of an N x N matrix by cofactor expansion along the first row (N <= 5: the sizes the
+/// predicates use, where expansion costs fewer products than it seems and needs no division).
+template <class T, std::size_t N>
+T determinant(const Matrix<T, N>& m) {
+    if constexpr (N == 1) {
+        return m[0][0];
+    } else {
+        T sum(0);
+        for (std::size_t j = 0; j < N; ++j) {
+            Matrix<T, N - 1> minor{};
+            for (std::size_t i = 1; i < N; ++i) {
+                for (std::size_t k = 0, c = 0; k < N; ++k) {
+                    if (k != j) {
+                        minor[i - 1][c++] = m[i][k];
+                    }
+                }
+            }
+            const T term(m[0][j] * determinant<T, N - 1>(minor));
+            sum = j % 2 == 0 ? T(sum + term) : T(sum - term);
+        }
+        return sum;
+    }
+}
+
+}  // namespace cavity::predicates::detail
