@@ -25,9 +25,10 @@
 // the same sign, whatever the signs of the W.
 //
 // The filter evaluates these in interval arithmetic (interval.h, sound for every finite input,
-// overflow and underflow included) and answers when the determinant's interval and those of the
-// W exclude zero. The exact stage evaluates the same formulas over GMP integers after scaling the
-// defining doubles to integers (homogeneous.h says why that keeps the signs).
+// overflow and underflow included) on the query translated to one of its defining points, and
+// answers when the determinant's interval and those of the W exclude zero. The exact stage
+// evaluates the same formulas over GMP integers after scaling the defining doubles to integers
+// (homogeneous.h says why that keeps the signs).
 namespace cavity::predicates {
 
 namespace {
@@ -87,12 +88,27 @@ int common_scale(std::initializer_list<double> values, int scale) {
     return scale;
 }
 
+/// A defining point of the query, to translate the query to: the filter's intervals then grow
+/// with the query's extent, not with its distance from the origin.
+template <std::size_t N>
+Point3 query_origin(const std::array<const GenericPoint3*, N>& g) {
+    Point3 origin{};
+    for_each_defining_point(*g[0], [&](const Point3& p) { origin = p; });
+    return origin;
+}
+
 template <std::size_t N>
 std::array<Homogeneous<Interval>, N> interval_rows(const std::array<const GenericPoint3*, N>& g) {
-    std::array<Homogeneous<Interval>, N> rows;
+    const Point3 o = query_origin(g);
+    const auto lift = [&](const Point3& p) {
+        return std::array<Interval, 3>{Interval(p.x) - Interval(o.x),
+                                       Interval(p.y) - Interval(o.y),
+                                       Interval(p.z) - Interval(o.z)};
+    };
     const auto identity = [](double x) { return Interval(x); };
+    std::array<Homogeneous<Interval>, N> rows;
     for (std::size_t i = 0; i < N; ++i) {
-        rows[i] = detail::homogeneous<Interval>(*g[i], identity, identity);
+        rows[i] = detail::homogeneous<Interval>(*g[i], lift, identity);
     }
     return rows;
 }
@@ -118,7 +134,10 @@ std::array<Homogeneous<Integer>, N> exact_rows(const std::array<const GenericPoi
         }
         rows[i] = detail::homogeneous<Integer>(
             *g[i],
-            [&](double x) { return scaled(x, scale); },
+            [&](const Point3& p) {
+                return std::array<Integer, 3>{
+                    scaled(p.x, scale), scaled(p.y, scale), scaled(p.z, scale)};
+            },
             [&](double x) { return scaled(x, parameter_scale); });
     }
     return rows;

@@ -8,7 +8,7 @@
 
 // Homogeneous coordinates of generic points and the two determinants the predicates take of them,
 // written once over a number type T (an interval for the filter, an exact integer behind it). T
-// needs +, - (binary and unary), * and construction from what `coordinate` and `parameter` return.
+// needs +, -, * and construction from an int and from what `lift` and `parameter` return.
 namespace cavity::predicates::detail {
 
 template <class T>
@@ -19,17 +19,16 @@ struct Homogeneous {
     T w;
 };
 
-/// The homogeneous coordinates of g as in generic_point.h. `coordinate` maps a double coordinate
-/// of a defining point to T, `parameter` a double of a SegmentParameterPoint's parameter; each
-/// may scale by its own positive constant (the exact stage scales to integers), since scaling all
-/// coordinates scales the configuration, which keeps the predicates' signs, and scaling the
-/// parameter's numerator and denominator together scales one point's (X, Y, Z, W), which keeps
-/// the point.
-template <class T, class Coordinate, class Parameter>
-Homogeneous<T> homogeneous(const GenericPoint3& g, Coordinate coordinate, Parameter parameter) {
-    const auto lift = [&](const Point3& p) {
-        return std::array<T, 3>{T(coordinate(p.x)), T(coordinate(p.y)), T(coordinate(p.z))};
-    };
+/// The homogeneous coordinates of g as in generic_point.h. `lift` maps a defining point to its
+/// three coordinates in T, `parameter` a double of a SegmentParameterPoint's parameter to T. The
+/// caller may translate every defining point by one vector and scale every coordinate by one
+/// positive constant (the filter translates to a point of the query, so that the intervals stay
+/// as narrow as the query's extent allows; the exact stage scales to integers): LNC and LPI points
+/// are affine constructions, so they move with their defining points, and orient3d and insphere
+/// keep their signs under translation and positive scaling. Scaling one point's numerator and
+/// denominator together scales its (X, Y, Z, W), which keeps the point.
+template <class T, class Lift, class Parameter>
+Homogeneous<T> homogeneous(const GenericPoint3& g, Lift lift, Parameter parameter) {
     const auto minus = [](const std::array<T, 3>& u, const std::array<T, 3>& v) {
         return std::array<T, 3>{T(u[0] - v[0]), T(u[1] - v[1]), T(u[2] - v[2])};
     };

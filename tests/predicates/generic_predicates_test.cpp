@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 #include <variant>
@@ -228,24 +229,52 @@ TEST(GenericPredicates, AgreeWithTheOracleOnRandomMixes) {
     EXPECT_EQ(sphere.mismatches, 0u);
 }
 
-/// The filter decides random unit-range queries on its own (it is not merely sound).
+/// The filter decides random general-position queries on its own (it is not merely sound), also
+/// far from the origin: unit-range points 2^-10 apart offset by about 10^6, where determinants of
+/// the raw coordinates would cancel 16 orders of magnitude.
 TEST(GenericPredicates, FilterDecidesGeneralPositionQueries) {
     Source s(16);
-    Tally orient, sphere;
-    for (std::size_t n = 0; n < queries(); ++n) {
-        std::array<GenericPoint3, 5> g;
-        for (auto& p : g) {
-            p = s.generic(s.integer(0, 2), -2, 2);
+    for (const double offset : {0.0, 1048576.0 + 0.375}) {
+        Tally orient, sphere;
+        const auto moved = [&](Point3 p) {
+            return Point3{offset + std::ldexp(p.x, -10),
+                          offset + std::ldexp(p.y, -10),
+                          offset + std::ldexp(p.z, -10)};
+        };
+        for (std::size_t n = 0; n < queries(); ++n) {
+            std::array<GenericPoint3, 5> g;
+            for (auto& p : g) {
+                const int kind = s.integer(0, 2);
+                if (kind == 0) {
+                    p = moved(s.point(-2, 2));
+                } else if (kind == 1) {
+                    p = SegmentParameterPoint{
+                        moved(s.point(-2, 2)), moved(s.point(-2, 2)), s.unit(), 1.0};
+                } else {
+                    std::optional<LinePlanePoint> l;
+                    while (!l) {
+                        l = line_plane_point(moved(s.point(-2, 2)),
+                                             moved(s.point(-2, 2)),
+                                             moved(s.point(-2, 2)),
+                                             moved(s.point(-2, 2)),
+                                             moved(s.point(-2, 2)));
+                    }
+                    p = *l;
+                }
+            }
+            orient.check(orient3d_staged(g[0], g[1], g[2], g[3]), oracle_orient3d(g), g, 4);
+            sphere.check(insphere_staged(g[0], g[1], g[2], g[3], g[4]), oracle_insphere(g), g, 5);
         }
-        orient.check(orient3d_staged(g[0], g[1], g[2], g[3]), oracle_orient3d(g), g, 4);
-        sphere.check(insphere_staged(g[0], g[1], g[2], g[3], g[4]), oracle_insphere(g), g, 5);
+        std::printf("offset %g: exact stage orient3d %zu, insphere %zu of %zu\n",
+                    offset,
+                    orient.exact_stage,
+                    sphere.exact_stage,
+                    queries());
+        EXPECT_EQ(orient.mismatches, 0u);
+        EXPECT_EQ(sphere.mismatches, 0u);
+        EXPECT_LT(orient.exact_stage * 20, queries());
+        EXPECT_LT(sphere.exact_stage * 20, queries());
     }
-    std::printf("exact stage: orient3d %zu, insphere %zu of %zu\n",
-                orient.exact_stage,
-                sphere.exact_stage,
-                queries());
-    EXPECT_LT(orient.exact_stage * 20, queries());
-    EXPECT_LT(sphere.exact_stage * 20, queries());
 }
 
 /// A configuration with an exact degeneracy: implicit points exactly on the plane of three
