@@ -9,6 +9,8 @@
 
 #include <boost/multiprecision/gmp.hpp>
 
+#include "cavity/predicates/insphere.h"
+#include "cavity/predicates/orient3d.h"
 #include "homogeneous.h"
 #include "interval.h"
 
@@ -172,6 +174,18 @@ int insphere_sign(const std::array<Homogeneous<T>, 5>& rows) {
     return sign_of(detail::determinant<T, 5>(m));
 }
 
+/// True when every point is an input point: the Point3 predicates (filter, adaptive stages,
+/// exact) then decide, some thirty times faster than the intervals here.
+template <std::size_t N>
+bool all_explicit(const std::array<const GenericPoint3*, N>& g) {
+    for (const GenericPoint3* p : g) {
+        if (!std::holds_alternative<Point3>(*p)) {
+            return false;
+        }
+    }
+    return true;
+}
+
 bool is_finite(const Point3& p) {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
@@ -183,6 +197,10 @@ Verdict orient3d_staged(const GenericPoint3& a,
                         const GenericPoint3& c,
                         const GenericPoint3& d) {
     const std::array<const GenericPoint3*, 4> g{&a, &b, &c, &d};
+    if (all_explicit(g)) {
+        return orient3d_staged(
+            std::get<Point3>(a), std::get<Point3>(b), std::get<Point3>(c), std::get<Point3>(d));
+    }
     if (const int s = orient3d_sign(interval_rows(g))) {
         return {static_cast<Sign>(s), Stage::kFilter};
     }
@@ -195,6 +213,13 @@ Verdict insphere_staged(const GenericPoint3& a,
                         const GenericPoint3& d,
                         const GenericPoint3& e) {
     const std::array<const GenericPoint3*, 5> g{&a, &b, &c, &d, &e};
+    if (all_explicit(g)) {
+        return insphere_staged(std::get<Point3>(a),
+                               std::get<Point3>(b),
+                               std::get<Point3>(c),
+                               std::get<Point3>(d),
+                               std::get<Point3>(e));
+    }
     if (const int s = insphere_sign(interval_rows(g))) {
         return {static_cast<Sign>(s), Stage::kFilter};
     }

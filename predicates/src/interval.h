@@ -5,18 +5,23 @@
 #include <limits>
 
 // Interval arithmetic under round-to-nearest, without switching the rounding mode (the predicates
-// assume round-to-nearest everywhere, fp_environment.h): each operation rounds to nearest and then
-// steps one double outward with nextafter.
+// assume round-to-nearest everywhere, fp_environment.h): each operation rounds its endpoints to
+// nearest and then moves each outward by d(r) = fl(fl(|r| 2^-52) + 2^-1074).
 //
-// Why that is sound. For a real x with fl(x) its double rounded to nearest, x lies in
-// [pred(fl(x)), succ(fl(x))]: |x - fl(x)| is at most half the spacing on the side of fl(x) where x
-// lies (at a power of two the spacing below is half the one above, and a value below rounding up to
-// 2^k is within a quarter of the upper spacing of it), and pred/succ step a whole spacing. This
-// holds in the subnormal range (fixed spacing 2^-1074; a value rounding to 0 is within 2^-1075 of
-// it), and on overflow: a value that rounds to +inf exceeds DBL_MAX, which is pred(+inf). So each
-// endpoint computed as nextafter(fl(e), outward) bounds the exact operation on the input endpoints,
-// and by induction every interval holds the exact value of the expression it was computed for. An
-// operation that meets inf - inf or 0 * inf gives NaN; such an interval is made the whole line.
+// Why that is sound. Let x be an exact endpoint and r = fl(x), rounded to nearest. x lies between
+// pred(r) and succ(r): |x - r| is at most half the spacing of the doubles on x's side of r. For
+// |r| in [2^e, 2^(e+1)) the spacing on either side of r is at most 2^(e-52) <= |r| 2^-52, and at
+// least 2^-1074 everywhere (subnormals). d(r) is at least max(|r| 2^-52, 2^-1074): the product by
+// a power of two is exact unless it falls below 2^-1022, and then both terms are multiples of
+// 2^-1074 below 2^-1021, so the sum is exact and covers the product's rounding error of at most
+// 2^-1075; otherwise adding 2^-1074 and rounding never gives less than the product. So r - d(r)
+// is at most pred(r) (it moves a whole spacing down from r), and rounding it to nearest, which is
+// monotone and keeps the double pred(r), gives a double at most pred(r) <= x; likewise upward.
+// Overflow: a value that rounds to +inf exceeds DBL_MAX, and +inf - d = NaN below makes the
+// interval the whole line; a finite r moved past DBL_MAX becomes an infinite, still sound, bound.
+// By induction every interval holds the exact value of the expression it was computed for. An
+// operation that meets inf - inf or 0 * inf gives NaN; such an interval is the whole line, which
+// decides no sign.
 namespace cavity::predicates::detail {
 
 class Interval {
@@ -76,15 +81,22 @@ private:
         return exact(-kInf, kInf);
     }
 
-    /// [lo, hi] as rounded to nearest, widened by one double each way. A NaN endpoint can only
-    /// come from an infinite input endpoint; such intervals are the whole line, which decides no
-    /// sign.
+    /// The widening d(r) above.
+    static double slack(double r) {
+        constexpr double kUlpScale = 0x1p-52;
+        constexpr double kSmallestSubnormal = 0x1p-1074;
+        return std::abs(r) * kUlpScale + kSmallestSubnormal;
+    }
+
+    /// [lo, hi] as rounded to nearest, moved outward by the slack (sound, see the top). A NaN
+    /// endpoint can only come from an infinite input endpoint; such intervals are the whole line.
     static Interval outward(double lo, double hi) {
-        constexpr double kInf = std::numeric_limits<double>::infinity();
-        if (std::isnan(lo) || std::isnan(hi)) {
+        const double down = lo - slack(lo);
+        const double up = hi + slack(hi);
+        if (std::isnan(down) || std::isnan(up)) {
             return whole_line();
         }
-        return exact(std::nextafter(lo, -kInf), std::nextafter(hi, kInf));
+        return exact(down, up);
     }
 
     double lo_ = 0.0;

@@ -7,7 +7,7 @@
 /// orient3d and insphere on any mix of explicit and implicit points (generic_point.h), exact for
 /// every finite double defining them, with the sign conventions of orient3d.h and insphere.h. An
 /// interval filter decides first (Stage::kFilter); exact integers decide the rest (Stage::kExact).
-/// On explicit points alone the overloads taking Point3 are faster; these agree with them.
+/// When every point is explicit they hand the query to the Point3 predicates (and their stages).
 namespace cavity::predicates {
 
 Verdict orient3d_staged(const GenericPoint3& a,
