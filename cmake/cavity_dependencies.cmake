@@ -7,7 +7,7 @@ add_library(cavity::gmp ALIAS cavity_gmp)
 target_include_directories(cavity_gmp SYSTEM INTERFACE ${GMP_INCLUDE_DIR})
 target_link_libraries(cavity_gmp INTERFACE ${GMP_LIBRARY})
 
-find_package(Boost 1.74 REQUIRED)  # header-only: Boost.Multiprecision for the oracle
+find_package(Boost 1.74 REQUIRED)  # header-only: Boost.Multiprecision (oracle, generic predicates)
 if(CAVITY_BUILD_PROGRAMS)
   find_package(CLI11 CONFIG QUIET)
   if(NOT CLI11_FOUND)

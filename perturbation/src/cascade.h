@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "cavity/predicates/generic_point.h"
 #include "cavity/predicates/point.h"
 #include "cavity/predicates/sign.h"
 
@@ -35,10 +36,9 @@ struct Resolution {
 };
 
 /// The rows other than row `skipped`, in row order.
-template <std::size_t N>
-std::array<predicates::Point3, N - 1> other_rows(const std::array<predicates::Point3, N>& rows,
-                                                 std::size_t skipped) {
-    std::array<predicates::Point3, N - 1> others{};
+template <class P, std::size_t N>
+std::array<P, N - 1> other_rows(const std::array<P, N>& rows, std::size_t skipped) {
+    std::array<P, N - 1> others{};
     std::size_t n = 0;
     for (std::size_t j = 0; j < N; ++j) {
         if (j != skipped) {
@@ -55,6 +55,10 @@ inline predicates::Point3 position(const predicates::Point3& p) {
 
 inline predicates::Point3 position(const predicates::WeightedPoint3& p) {
     return {p.x, p.y, p.z};
+}
+
+inline const predicates::GenericPoint3& position(const predicates::GenericPoint3& p) {
+    return p;
 }
 
 }  // namespace cavity::perturbation

@@ -1,6 +1,9 @@
 #include "cavity/perturbation/outer_halfspace.h"
 
+#include <type_traits>
+
 #include "cascade.h"
+#include "cavity/predicates/generic_predicates.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"
 #include "cavity/predicates/orient4d.h"
@@ -37,10 +40,13 @@ using predicates::Verdict;
 /// whatever y's key. After a rigid motion putting the plane at z = 0, the 5x5 lifted determinant
 /// expands along its z column to a multiple of the in-plane D(eps) fixed by y, so the ghost and the
 /// solid tetrahedron behind vwx never disagree on a coplanar u.
-Resolution resolve_tie(const std::array<Point3, 4>& p, const Point3& y, const Keys4& keys) {
+///
+/// P is Point3 or GenericPoint3 (implicit points: the same argument, exact orient3d).
+template <class P>
+Resolution resolve_tie(const std::array<P, 4>& p, const P& y, const Keys4& keys) {
     std::uint8_t cofactors = 0;
     for (const std::uint8_t i : key_order(keys)) {
-        const std::array<Point3, 3> others = other_rows(p, i);
+        const std::array<P, 3> others = other_rows(p, i);
         ++cofactors;
         const Sign minor = predicates::orient3d(others[0], others[1], others[2], y);
         if (minor != Sign::kZero) {
@@ -55,6 +61,14 @@ Resolution resolve_tie(const std::array<Point3, 4>& p, const Point3& y, const Ke
 /// plane of x w v y restricted to the plane's lift is the witness plane of v w x).
 Verdict in_circumball(
     const Point3& x, const Point3& w, const Point3& v, const Point3& y, const Point3& u) {
+    return predicates::insphere_staged(x, w, v, y, u);
+}
+
+Verdict in_circumball(const GenericPoint3& x,
+                      const GenericPoint3& w,
+                      const GenericPoint3& v,
+                      const GenericPoint3& y,
+                      const GenericPoint3& u) {
     return predicates::insphere_staged(x, w, v, y, u);
 }
 
@@ -82,8 +96,11 @@ SosVerdict outer_halfspace(
     if (disk.sign != Sign::kZero) {
         return {disk.sign, disk.stage, 0};
     }
+    using Position = std::decay_t<decltype(position(v))>;
     const Resolution r =
-        resolve_tie({position(v), position(w), position(x), position(u)}, position(y), keys);
+        resolve_tie(std::array<Position, 4>{position(v), position(w), position(x), position(u)},
+                    Position(position(y)),
+                    keys);
     return {r.sign, disk.stage, r.cofactors};
 }
 
@@ -103,6 +120,24 @@ Sign outer_halfspace_sos(const Point3& v,
                          const Point3& x,
                          const Point3& y,
                          const Point3& u,
+                         const Keys4& keys) {
+    return outer_halfspace(v, w, x, y, u, keys).sign;
+}
+
+SosVerdict outer_halfspace_sos_staged(const GenericPoint3& v,
+                                      const GenericPoint3& w,
+                                      const GenericPoint3& x,
+                                      const GenericPoint3& y,
+                                      const GenericPoint3& u,
+                                      const Keys4& keys) {
+    return outer_halfspace(v, w, x, y, u, keys);
+}
+
+Sign outer_halfspace_sos(const GenericPoint3& v,
+                         const GenericPoint3& w,
+                         const GenericPoint3& x,
+                         const GenericPoint3& y,
+                         const GenericPoint3& u,
                          const Keys4& keys) {
     return outer_halfspace(v, w, x, y, u, keys).sign;
 }

@@ -1,6 +1,7 @@
 #include "cavity/perturbation/sos.h"
 
 #include "cascade.h"
+#include "cavity/predicates/generic_predicates.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"
 #include "cavity/predicates/orient4d.h"
@@ -24,10 +25,14 @@ namespace {
 /// Another minor vanishes only if e lies on a face plane of abcd; two vanish only if e lies on an
 /// edge line, three only if e is a vertex. So distinct points need at most three cofactors, and at
 /// most two when all five are cospherical (a line meets a sphere in at most two points).
-Resolution resolve_zero(const std::array<Point3, 5>& p, const Keys5& keys) {
+///
+/// P is Point3 or GenericPoint3: the argument is the same for implicit points, whose orient3d is
+/// as exact as that of doubles.
+template <class P>
+Resolution resolve_zero(const std::array<P, 5>& p, const Keys5& keys) {
     std::uint8_t cofactors = 0;
     for (const std::uint8_t i : key_order(keys)) {
-        const std::array<Point3, 4> others = other_rows(p, i);
+        const std::array<P, 4> others = other_rows(p, i);
         ++cofactors;
         const Sign minor = predicates::orient3d(others[0], others[1], others[2], others[3]);
         if (minor != Sign::kZero) {
@@ -52,8 +57,31 @@ SosVerdict insphere_sos_staged(const Point3& a,
     if (exact.sign != Sign::kZero) {
         return {exact.sign, exact.stage, 0};
     }
-    const Resolution r = resolve_zero({a, b, c, d, e}, keys);
+    const Resolution r = resolve_zero(std::array<Point3, 5>{a, b, c, d, e}, keys);
     return {r.sign, exact.stage, r.cofactors};
+}
+
+SosVerdict insphere_sos_staged(const GenericPoint3& a,
+                               const GenericPoint3& b,
+                               const GenericPoint3& c,
+                               const GenericPoint3& d,
+                               const GenericPoint3& e,
+                               const Keys5& keys) {
+    const predicates::Verdict exact = predicates::insphere_staged(a, b, c, d, e);
+    if (exact.sign != Sign::kZero) {
+        return {exact.sign, exact.stage, 0};
+    }
+    const Resolution r = resolve_zero(std::array<GenericPoint3, 5>{a, b, c, d, e}, keys);
+    return {r.sign, exact.stage, r.cofactors};
+}
+
+Sign insphere_sos(const GenericPoint3& a,
+                  const GenericPoint3& b,
+                  const GenericPoint3& c,
+                  const GenericPoint3& d,
+                  const GenericPoint3& e,
+                  const Keys5& keys) {
+    return insphere_sos_staged(a, b, c, d, e, keys).sign;
 }
 
 namespace detail {
@@ -64,7 +92,7 @@ Sign sos_tie(const Point3& a,
              const Point3& d,
              const Point3& e,
              const Keys5& keys) {
-    return resolve_zero({a, b, c, d, e}, keys).sign;
+    return resolve_zero(std::array<Point3, 5>{a, b, c, d, e}, keys).sign;
 }
 
 }  // namespace detail
@@ -79,8 +107,9 @@ SosVerdict orient4d_sos_staged(const WeightedPoint3& a,
     if (exact.sign != Sign::kZero) {
         return {exact.sign, exact.stage, 0};
     }
-    const Resolution r =
-        resolve_zero({position(a), position(b), position(c), position(d), position(e)}, keys);
+    const Resolution r = resolve_zero(
+        std::array<Point3, 5>{position(a), position(b), position(c), position(d), position(e)},
+        keys);
     return {r.sign, exact.stage, r.cofactors};
 }
 

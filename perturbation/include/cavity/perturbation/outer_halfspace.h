@@ -32,6 +32,21 @@ SosVerdict outer_halfspace_sos_staged(const Point3& v,
                                       const Point3& u,
                                       const Keys4& keys);
 
+/// On any mix of input and implicit points (keys as stated in sos.h).
+Sign outer_halfspace_sos(const GenericPoint3& v,
+                         const GenericPoint3& w,
+                         const GenericPoint3& x,
+                         const GenericPoint3& y,
+                         const GenericPoint3& u,
+                         const Keys4& keys);
+
+SosVerdict outer_halfspace_sos_staged(const GenericPoint3& v,
+                                      const GenericPoint3& w,
+                                      const GenericPoint3& x,
+                                      const GenericPoint3& y,
+                                      const GenericPoint3& u,
+                                      const Keys4& keys);
+
 /// The weighted version: the in-plane test is the 2D power test of u against v, w, x.
 Sign outer_halfspace_weighted_sos(const WeightedPoint3& v,
                                   const WeightedPoint3& w,

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 
+#include "cavity/predicates/generic_point.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient4d.h"
 #include "cavity/predicates/point.h"
@@ -26,8 +27,20 @@
 /// tetrahedra, flips, deletion, polygon insertion) uses this one scheme, keyed on the input index,
 /// which is intrinsic to the input: the perturbed (weighted) Delaunay triangulation is unique and
 /// independent of the insertion order, the point-location method and the storage.
+///
+/// Steiner points. Implicit points (predicates/generic_point.h) are perturbed by the same scheme;
+/// the caller gives each one a key after every input point's, in creation order: with n input
+/// points, the k-th point created (k = 0, 1, ...) has key n + k, which is its index when new
+/// points are appended to the input (as edge protection appends them to the PLC). Consequences:
+/// the keys are distinct and deterministic (they depend only on the order of creation); a Steiner
+/// point is perturbed less than every input point (eps^(n+k+1) is of higher order), so a tie among
+/// input points alone is broken exactly as before any Steiner point existed, and a tie involving a
+/// Steiner point is broken by the input points' cofactors first, then by older Steiner points'.
+/// The cascade is unchanged: its cofactors are orient3d of four of the five points, exact on
+/// implicit points too, and never all zero when the reference tetrahedron is not flat.
 namespace cavity::perturbation {
 
+using predicates::GenericPoint3;
 using predicates::Point3;
 using predicates::Sign;
 using predicates::WeightedPoint3;
@@ -75,6 +88,21 @@ SosVerdict insphere_sos_staged(const Point3& a,
                                const Point3& c,
                                const Point3& d,
                                const Point3& e,
+                               const Keys5& keys);
+
+/// insphere_sos on any mix of input and implicit points (keys as stated at the top).
+Sign insphere_sos(const GenericPoint3& a,
+                  const GenericPoint3& b,
+                  const GenericPoint3& c,
+                  const GenericPoint3& d,
+                  const GenericPoint3& e,
+                  const Keys5& keys);
+
+SosVerdict insphere_sos_staged(const GenericPoint3& a,
+                               const GenericPoint3& b,
+                               const GenericPoint3& c,
+                               const GenericPoint3& d,
+                               const GenericPoint3& e,
                                const Keys5& keys);
 
 /// orient4d (the power test) under the perturbation. Never kZero if a, b, c, d is not flat. The

@@ -1,0 +1,254 @@
+#include "cavity/predicates/generic_predicates.h"
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cmath>
+#include <cstddef>
+#include <variant>
+
+#include <boost/multiprecision/gmp.hpp>
+
+#include "cavity/predicates/insphere.h"
+#include "cavity/predicates/orient3d.h"
+#include "homogeneous.h"
+#include "interval.h"
+
+// Filter, then exact, on the homogeneous coordinates (homogeneous.h).
+//
+// orient3d. det[a-d; b-d; c-d] = det[p 1] over p = a..d (oracle.cpp states why), and multiplying
+// row p by W_p turns (x, y, z, 1) into (X, Y, Z, W), so det[X Y Z W] = W_a W_b W_c W_d orient3d:
+// the sign is that of the homogeneous determinant times the signs of the four W (the same as
+// normalising each W to be positive first). W may be negative: a LinePlanePoint's W = n.(b - a)
+// has either sign, and so may a SegmentParameterPoint's denominator.
+//
+// insphere. det[p-e, |p-e|^2] over p = a..d = det[p |p|^2 1] over p = a..e (oracle.cpp), and
+// multiplying row p by W_p^2 > 0 turns (x, y, z, |p|^2, 1) into (XW, YW, ZW, X^2+Y^2+Z^2, W^2):
+// the same sign, whatever the signs of the W.
+//
+// The filter evaluates these in interval arithmetic (interval.h, sound for every finite input,
+// overflow and underflow included) on the query translated to one of its defining points, and
+// answers when the determinant's interval and those of the W exclude zero. The exact stage
+// evaluates the same formulas over GMP integers after scaling the defining doubles to integers
+// (homogeneous.h says why that keeps the signs).
+namespace cavity::predicates {
+
+namespace {
+
+using Integer =
+    boost::multiprecision::number<boost::multiprecision::gmp_int, boost::multiprecision::et_off>;
+using detail::Homogeneous;
+using detail::Interval;
+using detail::Matrix;
+
+int sign_of(const Interval& x) {
+    return x.sign();
+}
+
+int sign_of(const Integer& x) {
+    return x.sign();
+}
+
+/// The exponent k of the spacing of x's binade: x is an integer multiple of 2^k (x finite).
+int spacing_exponent(double x) {
+    return std::max(std::ilogb(x), -1022) - 52;
+}
+
+/// x * 2^-scale, an integer when x == 0 or scale <= spacing_exponent(x).
+Integer scaled(double x, int scale) {
+    if (x == 0.0) {
+        return Integer(0);
+    }
+    const int k = spacing_exponent(x);
+    const Integer mantissa(static_cast<long long>(std::ldexp(x, -k)));  // |mantissa| < 2^53
+    return mantissa << static_cast<unsigned>(k - scale);
+}
+
+/// Calls f on every coordinate of every point defining g.
+template <class F>
+void for_each_defining_point(const GenericPoint3& g, F f) {
+    if (const auto* p = std::get_if<Point3>(&g)) {
+        f(*p);
+    } else if (const auto* s = std::get_if<SegmentParameterPoint>(&g)) {
+        f(s->a);
+        f(s->b);
+    } else {
+        const auto& l = std::get<LinePlanePoint>(g);
+        for (const Point3* x : {&l.a, &l.b, &l.p, &l.q, &l.r}) {
+            f(*x);
+        }
+    }
+}
+
+/// The least spacing exponent of the nonzero doubles in `values` (0 when all are zero).
+int common_scale(std::initializer_list<double> values, int scale) {
+    for (const double v : values) {
+        if (v != 0.0) {
+            scale = std::min(scale, spacing_exponent(v));
+        }
+    }
+    return scale;
+}
+
+/// A defining point of the query, to translate the query to: the filter's intervals then grow
+/// with the query's extent, not with its distance from the origin.
+template <std::size_t N>
+Point3 query_origin(const std::array<const GenericPoint3*, N>& g) {
+    Point3 origin{};
+    for_each_defining_point(*g[0], [&](const Point3& p) { origin = p; });
+    return origin;
+}
+
+template <std::size_t N>
+std::array<Homogeneous<Interval>, N> interval_rows(const std::array<const GenericPoint3*, N>& g) {
+    const Point3 o = query_origin(g);
+    const auto lift = [&](const Point3& p) {
+        return std::array<Interval, 3>{Interval(p.x) - Interval(o.x),
+                                       Interval(p.y) - Interval(o.y),
+                                       Interval(p.z) - Interval(o.z)};
+    };
+    const auto identity = [](double x) { return Interval(x); };
+    std::array<Homogeneous<Interval>, N> rows;
+    for (std::size_t i = 0; i < N; ++i) {
+        rows[i] = detail::homogeneous<Interval>(*g[i], lift, identity);
+    }
+    return rows;
+}
+
+/// Exact homogeneous coordinates of the whole query, every coordinate scaled by one power of two
+/// and each parameter by its own.
+template <std::size_t N>
+std::array<Homogeneous<Integer>, N> exact_rows(const std::array<const GenericPoint3*, N>& g) {
+    int scale = INT_MAX;
+    for (const GenericPoint3* p : g) {
+        for_each_defining_point(*p, [&](const Point3& q) {
+            scale = common_scale({q.x, q.y, q.z}, scale);
+        });
+    }
+    if (scale == INT_MAX) {
+        scale = 0;
+    }
+    std::array<Homogeneous<Integer>, N> rows;
+    for (std::size_t i = 0; i < N; ++i) {
+        int parameter_scale = 0;
+        if (const auto* s = std::get_if<SegmentParameterPoint>(g[i])) {
+            parameter_scale = common_scale({s->numerator, s->denominator}, INT_MAX);
+        }
+        rows[i] = detail::homogeneous<Integer>(
+            *g[i],
+            [&](const Point3& p) {
+                return std::array<Integer, 3>{
+                    scaled(p.x, scale), scaled(p.y, scale), scaled(p.z, scale)};
+            },
+            [&](double x) { return scaled(x, parameter_scale); });
+    }
+    return rows;
+}
+
+/// The sign of orient3d from homogeneous rows; 0 also when undecided (a W of unknown sign).
+template <class T>
+int orient3d_sign(const std::array<Homogeneous<T>, 4>& rows) {
+    int w_signs = 1;
+    Matrix<T, 4> m;
+    for (std::size_t i = 0; i < 4; ++i) {
+        w_signs *= sign_of(rows[i].w);
+        m[i] = {rows[i].x, rows[i].y, rows[i].z, rows[i].w};
+    }
+    if (w_signs == 0) {
+        return 0;
+    }
+    return w_signs * sign_of(detail::determinant<T, 4>(m));
+}
+
+template <class T>
+int insphere_sign(const std::array<Homogeneous<T>, 5>& rows) {
+    Matrix<T, 5> m;
+    for (std::size_t i = 0; i < 5; ++i) {
+        const Homogeneous<T>& h = rows[i];
+        m[i] = {T(h.x * h.w),
+                T(h.y * h.w),
+                T(h.z * h.w),
+                T(h.x * h.x + h.y * h.y + h.z * h.z),
+                T(h.w * h.w)};
+    }
+    return sign_of(detail::determinant<T, 5>(m));
+}
+
+/// True when every point is an input point: the Point3 predicates (filter, adaptive stages,
+/// exact) then decide, some thirty times faster than the intervals here.
+template <std::size_t N>
+bool all_explicit(const std::array<const GenericPoint3*, N>& g) {
+    for (const GenericPoint3* p : g) {
+        if (!std::holds_alternative<Point3>(*p)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool is_finite(const Point3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+}  // namespace
+
+Verdict orient3d_staged(const GenericPoint3& a,
+                        const GenericPoint3& b,
+                        const GenericPoint3& c,
+                        const GenericPoint3& d) {
+    const std::array<const GenericPoint3*, 4> g{&a, &b, &c, &d};
+    if (all_explicit(g)) {
+        return orient3d_staged(
+            std::get<Point3>(a), std::get<Point3>(b), std::get<Point3>(c), std::get<Point3>(d));
+    }
+    if (const int s = orient3d_sign(interval_rows(g))) {
+        return {static_cast<Sign>(s), Stage::kFilter};
+    }
+    return {static_cast<Sign>(orient3d_sign(exact_rows(g))), Stage::kExact};
+}
+
+Verdict insphere_staged(const GenericPoint3& a,
+                        const GenericPoint3& b,
+                        const GenericPoint3& c,
+                        const GenericPoint3& d,
+                        const GenericPoint3& e) {
+    const std::array<const GenericPoint3*, 5> g{&a, &b, &c, &d, &e};
+    if (all_explicit(g)) {
+        return insphere_staged(std::get<Point3>(a),
+                               std::get<Point3>(b),
+                               std::get<Point3>(c),
+                               std::get<Point3>(d),
+                               std::get<Point3>(e));
+    }
+    if (const int s = insphere_sign(interval_rows(g))) {
+        return {static_cast<Sign>(s), Stage::kFilter};
+    }
+    return {static_cast<Sign>(insphere_sign(exact_rows(g))), Stage::kExact};
+}
+
+std::optional<LinePlanePoint> line_plane_point(
+    const Point3& a, const Point3& b, const Point3& p, const Point3& q, const Point3& r) {
+    for (const Point3* x : {&a, &b, &p, &q, &r}) {
+        if (!is_finite(*x)) {
+            return std::nullopt;
+        }
+    }
+    const GenericPoint3 point = LinePlanePoint{a, b, p, q, r};
+    if (exact_rows(std::array<const GenericPoint3*, 1>{&point})[0].w == 0) {
+        return std::nullopt;
+    }
+    return std::get<LinePlanePoint>(point);
+}
+
+std::optional<SegmentParameterPoint> segment_parameter_point(const Point3& a,
+                                                             const Point3& b,
+                                                             double numerator,
+                                                             double denominator) {
+    if (!is_finite(a) || !is_finite(b) || !std::isfinite(numerator) ||
+        !std::isfinite(denominator) || denominator == 0.0) {
+        return std::nullopt;
+    }
+    return SegmentParameterPoint{a, b, numerator, denominator};
+}
+
+}  // namespace cavity::predicates

@@ -1,0 +1,471 @@
+// The predicates on generic points (explicit and implicit, generic_predicates.h) against an
+// independent oracle: each implicit point is turned into its Cartesian coordinates over exact
+// rationals (GMP via Boost.Multiprecision) by a different formula from the predicates' homogeneous
+// one (the line-plane parameter from two orient3d determinants, t = f(a) / (f(a) - f(b))), and each
+// determinant is taken from its definition in differences. Families: random mixes over every
+// exponent range, exactly degenerate configurations (implicit points exactly on a plane or a sphere
+// through explicit ones), and the same moved by a few ulps. Zero disagreements allowed.
+//
+// CAVITY_GENERIC_QUERIES sets the number of queries per family and predicate (default 2000).
+
+#include "cavity/predicates/generic_predicates.h"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <optional>
+#include <random>
+#include <string>
+#include <variant>
+
+#include <boost/multiprecision/gmp.hpp>
+#include <gtest/gtest.h>
+
+#include "cavity/predicates/insphere.h"
+#include "cavity/predicates/orient3d.h"
+
+namespace cavity::predicates {
+namespace {
+
+using Rational = boost::multiprecision::mpq_rational;
+using Exact = std::array<Rational, 3>;
+
+std::size_t queries() {
+    const char* text = std::getenv("CAVITY_GENERIC_QUERIES");
+    return text != nullptr && *text != '\0' ? std::strtoull(text, nullptr, 0) : 2000;
+}
+
+Exact exact(const Point3& p) {
+    return {Rational(p.x), Rational(p.y), Rational(p.z)};
+}
+
+Exact minus(const Exact& u, const Exact& v) {
+    return {u[0] - v[0], u[1] - v[1], u[2] - v[2]};
+}
+
+Rational det3(const Exact& r, const Exact& s, const Exact& t) {
+    return r[0] * (s[1] * t[2] - s[2] * t[1]) - r[1] * (s[0] * t[2] - s[2] * t[0]) +
+           r[2] * (s[0] * t[1] - s[1] * t[0]);
+}
+
+Rational orient3d_of(const Exact& a, const Exact& b, const Exact& c, const Exact& d) {
+    return det3(minus(a, d), minus(b, d), minus(c, d));
+}
+
+/// a + t (b - a).
+Exact along(const Exact& a, const Exact& b, const Rational& t) {
+    return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+}
+
+Exact cartesian(const GenericPoint3& g) {
+    if (const auto* p = std::get_if<Point3>(&g)) {
+        return exact(*p);
+    }
+    if (const auto* s = std::get_if<SegmentParameterPoint>(&g)) {
+        return along(exact(s->a), exact(s->b), Rational(s->numerator) / Rational(s->denominator));
+    }
+    // orient3d(p, q, r, x) is affine in x, so along the line it is f(a) + t (f(b) - f(a)).
+    const auto& l = std::get<LinePlanePoint>(g);
+    const Exact p = exact(l.p), q = exact(l.q), r = exact(l.r), a = exact(l.a), b = exact(l.b);
+    const Rational fa = orient3d_of(p, q, r, a);
+    const Rational fb = orient3d_of(p, q, r, b);
+    return along(a, b, fa / (fa - fb));
+}
+
+Sign sign_of(const Rational& x) {
+    return x > 0 ? Sign::kPos : (x < 0 ? Sign::kNeg : Sign::kZero);
+}
+
+Sign oracle_orient3d(const std::array<GenericPoint3, 5>& g) {
+    return sign_of(orient3d_of(cartesian(g[0]), cartesian(g[1]), cartesian(g[2]), cartesian(g[3])));
+}
+
+Sign oracle_insphere(const std::array<GenericPoint3, 5>& g) {
+    const Exact e = cartesian(g[4]);
+    std::array<std::array<Rational, 4>, 4> m;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const Exact d = minus(cartesian(g[i]), e);
+        m[i] = {d[0], d[1], d[2], d[0] * d[0] + d[1] * d[1] + d[2] * d[2]};
+    }
+    // Expansion along the last column.
+    Rational det = 0;
+    for (std::size_t i = 0; i < 4; ++i) {
+        std::array<Exact, 3> rest;
+        for (std::size_t k = 0, n = 0; k < 4; ++k) {
+            if (k != i) {
+                rest[n++] = {m[k][0], m[k][1], m[k][2]};
+            }
+        }
+        const Rational term = m[i][3] * det3(rest[0], rest[1], rest[2]);
+        det += (i % 2 == 0) ? -term : term;  // cofactor sign (-1)^(i + 3) for column 3
+    }
+    return sign_of(det);
+}
+
+std::string hex(double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%a", v);
+    return buffer;
+}
+
+std::string describe(const Point3& p) {
+    return "(" + hex(p.x) + ", " + hex(p.y) + ", " + hex(p.z) + ")";
+}
+
+std::string describe(const GenericPoint3& g) {
+    if (const auto* p = std::get_if<Point3>(&g)) {
+        return describe(*p);
+    }
+    if (const auto* s = std::get_if<SegmentParameterPoint>(&g)) {
+        return "LNC[" + describe(s->a) + " " + describe(s->b) + " " + hex(s->numerator) + "/" +
+               hex(s->denominator) + "]";
+    }
+    const auto& l = std::get<LinePlanePoint>(g);
+    return "LPI[" + describe(l.a) + " " + describe(l.b) + " " + describe(l.p) + " " +
+           describe(l.q) + " " + describe(l.r) + "]";
+}
+
+/// Counts disagreements with the oracle and the stages, printing the first few queries.
+struct Tally {
+    std::size_t mismatches = 0;
+    std::size_t zeros = 0;
+    std::size_t exact_stage = 0;
+
+    void check(Verdict v, Sign expected, const std::array<GenericPoint3, 5>& g, std::size_t n) {
+        zeros += expected == Sign::kZero ? 1 : 0;
+        exact_stage += v.stage == Stage::kExact ? 1 : 0;
+        if (v.sign != expected && ++mismatches <= 3) {
+            std::string text;
+            for (std::size_t i = 0; i < n; ++i) {
+                text += describe(g[i]) + "\n";
+            }
+            ADD_FAILURE() << "got " << to_int(v.sign) << ", oracle " << to_int(expected) << "\n"
+                          << text;
+        }
+    }
+};
+
+class Source {
+public:
+    explicit Source(std::uint64_t seed) : rng_(seed) {}
+
+    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+
+    double unit() { return std::uniform_real_distribution<double>(-1.0, 1.0)(rng_); }
+
+    /// Moves v by 1-4 ulps up or down.
+    double nudged(double v) {
+        const double toward = integer(0, 1) == 0 ? std::numeric_limits<double>::infinity()
+                                                 : -std::numeric_limits<double>::infinity();
+        for (int step = integer(1, 4); step > 0; --step) {
+            v = std::nextafter(v, toward);
+        }
+        return v;
+    }
+
+    /// A random point: every coordinate 2^k times a uniform [-1, 1), k in [lo, hi]; with
+    /// lo = -1074 and hi = 1023 it spans every finite double's magnitude.
+    Point3 point(int lo, int hi) {
+        return {std::ldexp(unit(), integer(lo, hi)),
+                std::ldexp(unit(), integer(lo, hi)),
+                std::ldexp(unit(), integer(lo, hi))};
+    }
+
+    /// A random generic point of the given kind (0 explicit, 1 on a segment, 2 line-plane).
+    GenericPoint3 generic(int kind, int lo, int hi) {
+        if (kind == 1) {
+            double den = unit();
+            den = den == 0.0 ? 1.0 : den;
+            return SegmentParameterPoint{point(lo, hi), point(lo, hi), unit(), den};
+        }
+        if (kind == 2) {
+            for (;;) {
+                if (auto l = line_plane_point(point(lo, hi),
+                                              point(lo, hi),
+                                              point(lo, hi),
+                                              point(lo, hi),
+                                              point(lo, hi))) {
+                    return *l;
+                }
+            }
+        }
+        return point(lo, hi);
+    }
+
+private:
+    std::mt19937_64 rng_;
+};
+
+struct Range {
+    int lo;
+    int hi;
+};
+
+/// Random mixes: every point explicit or implicit at random, coordinates 2^k [-1, 1) with k in
+/// one narrow band (tiny, unit, huge) or spread over the whole double range.
+TEST(GenericPredicates, AgreeWithTheOracleOnRandomMixes) {
+    Source s(15);
+    Tally orient, sphere;
+    for (const Range r : {Range{-1074, -1000},
+                          Range{-2, 2},
+                          Range{900, 1023},
+                          Range{-1074, 1023},
+                          Range{-40, 40}}) {
+        // The whole range makes the oracle's rationals thousands of bits long: fewer queries.
+        const std::size_t count = r.hi - r.lo > 1000 ? queries() / 8 : queries();
+        for (std::size_t n = 0; n < count; ++n) {
+            std::array<GenericPoint3, 5> g;
+            for (auto& p : g) {
+                p = s.generic(s.integer(0, 2), r.lo, r.hi);
+            }
+            orient.check(orient3d_staged(g[0], g[1], g[2], g[3]), oracle_orient3d(g), g, 4);
+            sphere.check(insphere_staged(g[0], g[1], g[2], g[3], g[4]), oracle_insphere(g), g, 5);
+        }
+    }
+    EXPECT_EQ(orient.mismatches, 0u);
+    EXPECT_EQ(sphere.mismatches, 0u);
+}
+
+/// The filter decides random general-position queries on its own (it is not merely sound), also
+/// far from the origin: unit-range points 2^-10 apart offset by about 10^6, where determinants of
+/// the raw coordinates would cancel 16 orders of magnitude.
+TEST(GenericPredicates, FilterDecidesGeneralPositionQueries) {
+    Source s(16);
+    for (const double offset : {0.0, 1048576.0 + 0.375}) {
+        Tally orient, sphere;
+        const auto moved = [&](Point3 p) {
+            return Point3{offset + std::ldexp(p.x, -10),
+                          offset + std::ldexp(p.y, -10),
+                          offset + std::ldexp(p.z, -10)};
+        };
+        for (std::size_t n = 0; n < queries(); ++n) {
+            std::array<GenericPoint3, 5> g;
+            for (auto& p : g) {
+                const int kind = s.integer(0, 2);
+                if (kind == 0) {
+                    p = moved(s.point(-2, 2));
+                } else if (kind == 1) {
+                    p = SegmentParameterPoint{
+                        moved(s.point(-2, 2)), moved(s.point(-2, 2)), s.unit(), 1.0};
+                } else {
+                    std::optional<LinePlanePoint> l;
+                    while (!l) {
+                        l = line_plane_point(moved(s.point(-2, 2)),
+                                             moved(s.point(-2, 2)),
+                                             moved(s.point(-2, 2)),
+                                             moved(s.point(-2, 2)),
+                                             moved(s.point(-2, 2)));
+                    }
+                    p = *l;
+                }
+            }
+            orient.check(orient3d_staged(g[0], g[1], g[2], g[3]), oracle_orient3d(g), g, 4);
+            sphere.check(insphere_staged(g[0], g[1], g[2], g[3], g[4]), oracle_insphere(g), g, 5);
+        }
+        std::printf("offset %g: exact stage orient3d %zu, insphere %zu of %zu\n",
+                    offset,
+                    orient.exact_stage,
+                    sphere.exact_stage,
+                    queries());
+        EXPECT_EQ(orient.mismatches, 0u);
+        EXPECT_EQ(sphere.mismatches, 0u);
+        EXPECT_LT(orient.exact_stage * 20, queries());
+        EXPECT_LT(sphere.exact_stage * 20, queries());
+    }
+}
+
+/// A configuration with an exact degeneracy: implicit points exactly on the plane of three
+/// explicit points (orient3d = 0) or on the sphere through four (insphere = 0), built from small
+/// integers times 2^scale plus an exactly representable offset.
+struct Degenerate {
+    std::array<GenericPoint3, 5> coplanar;
+    std::array<GenericPoint3, 5> cospherical;
+};
+
+Degenerate degenerate(Source& s, int scale) {
+    const auto at = [&](int x, int y, int z) {
+        return Point3{std::ldexp(x, scale), std::ldexp(y, scale), std::ldexp(z, scale)};
+    };
+    const auto random_at = [&] {
+        return at(s.integer(-50, 50), s.integer(-50, 50), s.integer(-50, 50));
+    };
+    Degenerate d;
+    // Plane pqr; two line-plane points on it and a segment point on a segment inside it.
+    const Point3 p = random_at(), q = random_at(), r = random_at();
+    const auto on_plane = [&]() -> GenericPoint3 {
+        for (;;) {
+            if (auto l = line_plane_point(random_at(), random_at(), p, q, r)) {
+                return *l;
+            }
+        }
+    };
+    const GenericPoint3 l1 = on_plane();
+    const GenericPoint3 l2 = on_plane();
+    // A segment between two points of the plane, at an odd parameter.
+    const Point3 u{p.x + (q.x - p.x) * 2 + (r.x - p.x) * 3,
+                   p.y + (q.y - p.y) * 2 + (r.y - p.y) * 3,
+                   p.z + (q.z - p.z) * 2 + (r.z - p.z) * 3};
+    const GenericPoint3 m =
+        SegmentParameterPoint{p, u, double(s.integer(-7, 7)), 3.0 + s.integer(0, 1) * -6.0};
+    d.coplanar = {p, l1, m, l2, random_at()};
+    if (s.integer(0, 1) == 0) {
+        std::swap(d.coplanar[0], d.coplanar[3]);
+    }
+    // Sphere through corners of the cube [0, 2]^3 (centre (1, 1, 1)); an implicit point at another
+    // corner: on a segment through it, or where a line through it meets a face plane of the cube.
+    const int cx = 2 * s.integer(0, 1), cy = 2 * s.integer(0, 1), cz = 2 * s.integer(0, 1);
+    const int dx = s.integer(1, 5) * (s.integer(0, 1) == 0 ? 1 : -1);
+    const int dy = s.integer(-5, 5), dz = s.integer(-5, 5);
+    GenericPoint3 implicit;
+    if (s.integer(0, 1) == 0) {
+        // corner = a + (1/4)(b - a) with a = corner - d, b = corner + 3d.
+        implicit = SegmentParameterPoint{
+            at(cx - dx, cy - dy, cz - dz), at(cx + 3 * dx, cy + 3 * dy, cz + 3 * dz), -1.0, -4.0};
+    } else {
+        // The plane x = cx through three points of it; the line through the corner crosses it
+        // there (dx != 0).
+        implicit = *line_plane_point(at(cx - dx, cy - dy, cz - dz),
+                                     at(cx + 2 * dx, cy + 2 * dy, cz + 2 * dz),
+                                     at(cx, 0, 0),
+                                     at(cx, 2, 0),
+                                     at(cx, 0, 2));
+    }
+    d.cospherical = {at(2 - cx, cy, cz),
+                     at(cx, 2 - cy, cz),
+                     at(cx, cy, 2 - cz),
+                     at(2 - cx, 2 - cy, 2 - cz),
+                     implicit};
+    if (s.integer(0, 1) == 0) {
+        std::swap(d.cospherical[1], d.cospherical[4]);
+    }
+    return d;
+}
+
+TEST(GenericPredicates, ExactZerosOnDegenerateConfigurations) {
+    Source s(1515);
+    Tally orient, sphere;
+    for (const int scale : {-1070, -500, -30, 0, 30, 500, 960}) {
+        for (std::size_t n = 0; n < queries() / 4; ++n) {
+            const Degenerate d = degenerate(s, scale);
+            const auto& c = d.coplanar;
+            orient.check(orient3d_staged(c[0], c[1], c[2], c[3]), oracle_orient3d(c), c, 4);
+            const auto& e = d.cospherical;
+            sphere.check(insphere_staged(e[0], e[1], e[2], e[3], e[4]), oracle_insphere(e), e, 5);
+        }
+    }
+    EXPECT_EQ(orient.mismatches, 0u);
+    EXPECT_EQ(sphere.mismatches, 0u);
+    // Every coplanar query is a zero; cospherical ones too, unless the swap put a flat tetrahedron
+    // first, which the oracle counts as well.
+    EXPECT_EQ(orient.zeros, 7 * (queries() / 4));
+    EXPECT_EQ(orient.exact_stage, orient.zeros);
+    EXPECT_GT(sphere.zeros, 0u);
+}
+
+/// The degenerate configurations with one defining double moved by 1-4 ulps: nonzero, tiny
+/// determinants that the filter must leave to the exact stage.
+TEST(GenericPredicates, AgreeWithTheOracleNearDegeneracies) {
+    Source s(151515);
+    Tally orient, sphere;
+    const auto nudge = [&](std::array<GenericPoint3, 5>& g) {
+        GenericPoint3& target = g[static_cast<std::size_t>(s.integer(0, 4))];
+        Point3* p = std::get_if<Point3>(&target);
+        if (auto* seg = std::get_if<SegmentParameterPoint>(&target)) {
+            p = s.integer(0, 1) == 0 ? &seg->a : &seg->b;
+        } else if (auto* l = std::get_if<LinePlanePoint>(&target)) {
+            p = std::array<Point3*, 5>{&l->a, &l->b, &l->p, &l->q, &l->r}[s.integer(0, 4)];
+        }
+        double& v = std::array<double*, 3>{&p->x, &p->y, &p->z}[s.integer(0, 2)][0];
+        v = s.nudged(v);
+    };
+    for (const int scale : {-1070, -30, 0, 30, 960}) {
+        for (std::size_t n = 0; n < queries() / 4; ++n) {
+            Degenerate d = degenerate(s, scale);
+            nudge(d.coplanar);
+            nudge(d.cospherical);
+            auto& c = d.coplanar;
+            // A nudged line-plane point may have lost its intersection; skip those.
+            const auto defined = [](const std::array<GenericPoint3, 5>& g) {
+                for (const auto& x : g) {
+                    if (const auto* l = std::get_if<LinePlanePoint>(&x)) {
+                        if (!line_plane_point(l->a, l->b, l->p, l->q, l->r)) {
+                            return false;
+                        }
+                    }
+                }
+                return true;
+            };
+            if (defined(c)) {
+                orient.check(orient3d_staged(c[0], c[1], c[2], c[3]), oracle_orient3d(c), c, 4);
+            }
+            auto& e = d.cospherical;
+            if (defined(e)) {
+                sphere.check(
+                    insphere_staged(e[0], e[1], e[2], e[3], e[4]), oracle_insphere(e), e, 5);
+            }
+        }
+    }
+    EXPECT_EQ(orient.mismatches, 0u);
+    EXPECT_EQ(sphere.mismatches, 0u);
+}
+
+/// The sign of W never matters: the same point with W negated (the parameter's numerator and
+/// denominator negated, or the line-plane segment reversed) gives the same signs.
+TEST(GenericPredicates, NegativeHomogeneousWeightIsNormalised) {
+    Source s(7);
+    for (std::size_t n = 0; n < queries(); ++n) {
+        const Point3 a = s.point(-3, 3), b = s.point(-3, 3);
+        const double num = s.unit();
+        const double den = std::ldexp(1.0 + s.unit(), s.integer(-3, 3));  // nonzero
+        const GenericPoint3 lnc = SegmentParameterPoint{a, b, num, den};
+        const GenericPoint3 lnc_negated = SegmentParameterPoint{a, b, -num, -den};
+        const Point3 p = s.point(-3, 3), q = s.point(-3, 3), r = s.point(-3, 3);
+        const auto lpi = line_plane_point(a, b, p, q, r);
+        const auto lpi_reversed = line_plane_point(b, a, p, q, r);
+        ASSERT_TRUE(lpi && lpi_reversed);
+        const Point3 c = s.point(-3, 3), d = s.point(-3, 3), e = s.point(-3, 3);
+        EXPECT_EQ(orient3d(c, d, e, lnc), orient3d(c, d, e, lnc_negated));
+        EXPECT_EQ(orient3d(c, lnc, e, GenericPoint3(*lpi)),
+                  orient3d(c, lnc_negated, e, GenericPoint3(*lpi_reversed)));
+        EXPECT_EQ(insphere(c, d, lnc, e, GenericPoint3(*lpi)),
+                  insphere(c, d, lnc_negated, e, GenericPoint3(*lpi_reversed)));
+    }
+}
+
+/// An implicit point whose coordinates happen to be doubles agrees with the explicit predicates
+/// on those doubles.
+TEST(GenericPredicates, AgreeWithTheExplicitPredicatesOnDoublePoints) {
+    Source s(77);
+    for (std::size_t n = 0; n < queries(); ++n) {
+        const auto small = [&] {
+            return Point3{double(s.integer(-1000, 1000)),
+                          double(s.integer(-1000, 1000)),
+                          double(s.integer(-1000, 1000))};
+        };
+        const Point3 a = small(), b = small();
+        // The midpoint of integers is a multiple of 1/2: a double.
+        const GenericPoint3 mid = SegmentParameterPoint{a, b, 1.0, 2.0};
+        const Point3 mid_doubles{(a.x + b.x) / 2, (a.y + b.y) / 2, (a.z + b.z) / 2};
+        const Point3 c = small(), d = small(), e = small(), f = small();
+        EXPECT_EQ(orient3d(c, d, e, mid), orient3d(c, d, e, mid_doubles));
+        EXPECT_EQ(insphere(c, d, mid, e, GenericPoint3(f)), insphere(c, d, mid_doubles, e, f));
+    }
+}
+
+TEST(GenericPredicates, UndefinedPointsAreRefused) {
+    const Point3 o{0, 0, 0}, x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+    // The line along x is parallel to the plane z = 0 shifted up; the plane through o, x, 2x is
+    // no plane.
+    EXPECT_FALSE(line_plane_point(z, Point3{1, 0, 1}, o, x, y));
+    EXPECT_FALSE(line_plane_point(o, z, o, x, Point3{2, 0, 0}));
+    EXPECT_TRUE(line_plane_point(o, z, o, x, y));
+    EXPECT_FALSE(segment_parameter_point(o, x, 1.0, 0.0));
+    EXPECT_FALSE(segment_parameter_point(o, x, std::numeric_limits<double>::infinity(), 1.0));
+    EXPECT_TRUE(segment_parameter_point(o, x, 1.0, 3.0));
+}
+
+}  // namespace
+}  // namespace cavity::predicates
