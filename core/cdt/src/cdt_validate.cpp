@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
+#include <utility>
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/edge_protection.h"
@@ -89,13 +91,133 @@ std::string tet_name(const std::array<std::uint32_t, 4>& t, int base) {
     return s;
 }
 
+/// The mesh triangles around each vertex (indices into BoxedMesh::triangles), with a stamp per
+/// vertex and per triangle so that each facet's search visits each once without clearing.
+class VertexTriangles {
+public:
+    VertexTriangles(const std::vector<Triangle>& triangles, std::size_t vertices)
+        : start_(vertices + 1, 0)
+        , vertex_stamp_(vertices, 0)
+        , triangle_stamp_(triangles.size(), 0) {
+        for (const Triangle& g : triangles) {
+            for (std::uint32_t v : g) {
+                ++start_[v + 1];
+            }
+        }
+        for (std::size_t v = 0; v < vertices; ++v) {
+            start_[v + 1] += start_[v];
+        }
+        around_.resize(start_[vertices]);
+        std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
+        for (std::size_t k = 0; k < triangles.size(); ++k) {
+            for (std::uint32_t v : triangles[k]) {
+                around_[next[v]++] = static_cast<std::uint32_t>(k);
+            }
+        }
+    }
+
+    std::span<const std::uint32_t> of(std::uint32_t v) const {
+        return {around_.data() + start_[v], around_.data() + start_[v + 1]};
+    }
+
+    /// Starts a new search: every vertex and triangle counts as unvisited again.
+    void next_search() { ++stamp_; }
+
+    /// True the first time v is seen in this search.
+    bool first_visit_of_vertex(std::uint32_t v) {
+        return std::exchange(vertex_stamp_[v], stamp_) != stamp_;
+    }
+
+    bool first_visit_of_triangle(std::uint32_t k) {
+        return std::exchange(triangle_stamp_[k], stamp_) != stamp_;
+    }
+
+private:
+    std::vector<std::size_t> start_;
+    std::vector<std::uint32_t> around_;
+    std::vector<std::uint32_t> vertex_stamp_;
+    std::vector<std::uint32_t> triangle_stamp_;
+    std::uint32_t stamp_ = 0;
+};
+
+/// True when mesh triangle g lies in the facet's plane with its centroid in the facet's region.
+bool in_facet(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane, const Triangle& g) {
+    const auto& pts = plc.points.points;
+    if (plane.side(pts[g[0]]) != Sign::kZero || plane.side(pts[g[1]]) != Sign::kZero ||
+        plane.side(pts[g[2]]) != Sign::kZero) {
+        return false;
+    }
+    const ExactPoint a = exact_point(pts[g[0]]);
+    const ExactPoint b = exact_point(pts[g[1]]);
+    const ExactPoint c = exact_point(pts[g[2]]);
+    const ExactPoint centroid{
+        (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
+    return in_facet_region(plc, facet, plane, centroid);
+}
+
+/// The whole hull's shortcut: the facet's triangles found from its corners outward, through the
+/// triangles around the vertices of those already found, when their area is the facet's area;
+/// nullopt otherwise (the caller then scans every simplex). Why this is the same answer. The
+/// caller runs it only once the complex is known to be a valid triangulation and every PLC edge a
+/// union of mesh edges. Then no mesh triangle's relative interior meets the facet's boundary (the
+/// boundary is mesh edges, and simplices of a complex meet only in common faces), so a triangle
+/// in the plane with its centroid in the region lies in the region; their interiors are disjoint,
+/// so when their area equals the region's they cover it and there is no other such triangle; and
+/// no tetrahedron crosses the region, because its edges and interior would meet the relative
+/// interior of a covering triangle. The search visits only triangles around the facet, where the
+/// full scan tests every tetrahedron and triangle against every facet: quadratic on surface
+/// meshes, whose long Delaunay slivers defeat the boxes.
+std::optional<std::vector<Triangle>> covering_faces(const Plc& plc,
+                                                    const PlcFacet& facet,
+                                                    const ExactPlane& plane,
+                                                    const BoxedMesh& mesh,
+                                                    VertexTriangles& around) {
+    around.next_search();
+    std::vector<std::uint32_t> frontier;
+    for (const auto& loop : facet.loops) {
+        for (std::uint32_t v : loop) {
+            if (around.first_visit_of_vertex(v)) {
+                frontier.push_back(v);
+            }
+        }
+    }
+    std::vector<Triangle> faces;
+    Rational covered = 0;
+    const auto& pts = plc.points.points;
+    while (!frontier.empty()) {
+        const std::uint32_t v = frontier.back();
+        frontier.pop_back();
+        for (std::uint32_t k : around.of(v)) {
+            const Triangle& g = mesh.triangles[k];
+            if (!around.first_visit_of_triangle(k) || !in_facet(plc, facet, plane, g)) {
+                continue;
+            }
+            faces.push_back(g);
+            covered += triangle_area2(plane, pts[g[0]], pts[g[1]], pts[g[2]]);
+            for (std::uint32_t w : g) {
+                if (around.first_visit_of_vertex(w)) {
+                    frontier.push_back(w);
+                }
+            }
+        }
+    }
+    if (covered != facet_region_area2(plc, facet, plane)) {
+        return std::nullopt;
+    }
+    return faces;
+}
+
 /// The facet's triangles among the mesh triangles lying in its plane, after checking that no
 /// tetrahedron crosses it and, for the whole hull, that they cover its area. A carved domain holds
 /// only the part of a polygon next to its tetrahedra (none of a polygon with removed tetrahedra on
 /// both sides, the lower half of a wall whose upper side was a hole), and a part of the polygon in
 /// the domain but not covered would be crossed by a tetrahedron, which is checked.
-std::vector<Triangle> polygon_faces(
-    const Plc& plc, std::size_t index, const BoxedMesh& mesh, bool carved, Report& report) {
+std::vector<Triangle> polygon_faces(const Plc& plc,
+                                    std::size_t index,
+                                    const BoxedMesh& mesh,
+                                    VertexTriangles& around,
+                                    bool carved,
+                                    Report& report) {
     const PlcFacet& facet = plc.facets[index];
     const std::string name = facet_name(plc, index);
     const auto plane = ExactPlane::of_facet(plc, facet);
@@ -103,6 +225,11 @@ std::vector<Triangle> polygon_faces(
     if (!plane) {
         report.add(name + ": corners are collinear");
         return faces;
+    }
+    if (!carved) {
+        if (auto found = covering_faces(plc, facet, *plane, mesh, around)) {
+            return std::move(*found);
+        }
     }
     const auto& pts = plc.points.points;
     const Box box = facet_box(plc, facet);
@@ -134,16 +261,7 @@ std::vector<Triangle> polygon_faces(
         if (!box.meets(mesh.triangle_boxes[k])) {
             continue;
         }
-        if (plane->side(pts[g[0]]) != Sign::kZero || plane->side(pts[g[1]]) != Sign::kZero ||
-            plane->side(pts[g[2]]) != Sign::kZero) {
-            continue;
-        }
-        const ExactPoint a = exact_point(pts[g[0]]);
-        const ExactPoint b = exact_point(pts[g[1]]);
-        const ExactPoint c = exact_point(pts[g[2]]);
-        const ExactPoint centroid{
-            (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
-        if (in_facet_region(plc, facet, *plane, centroid)) {
+        if (in_facet(plc, facet, *plane, g)) {
             faces.push_back(g);
             covered += triangle_area2(*plane, pts[g[0]], pts[g[1]], pts[g[2]]);
         }
@@ -344,9 +462,10 @@ CdtValidation validate_cdt(const Plc& plc,
     for (const Triangle& g : mesh.triangles) {
         mesh.triangle_boxes.push_back(Box::of(plc.points.points, g));
     }
+    VertexTriangles around(mesh.triangles, plc.points.size());
     std::set<Triangle> constrained;
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
-        for (const Triangle& g : polygon_faces(plc, f, mesh, carved, report)) {
+        for (const Triangle& g : polygon_faces(plc, f, mesh, around, carved, report)) {
             constrained.insert(g);
         }
     }
