@@ -6,9 +6,10 @@ The Markdown goes to stdout; with --readme, the block between "<!-- peers:begin 
 "<!-- peers:end -->" in that file is replaced by the summary lines (the file must have both).
 """
 import csv
-import os
 import statistics
 import sys
+
+from readme_block import replace_block
 
 # Issue 13's goals: CPU time ratios to CGAL, peak bytes per point on the cube, 2-thread speed-up.
 TIME_GOALS = {"cube": 0.45, "grid": 0.75, "sphere": 0.70}
@@ -104,19 +105,10 @@ def main(argv):
 
 
 def write_readme_block(readme, n, summary):
-    begin, end = "<!-- peers:begin -->", "<!-- peers:end -->"
-    with open(readme) as f:
-        text = f.read()
-    if begin not in text or end not in text:
-        sys.exit(f"{readme}: no {begin} ... {end} block to replace")
-    head, rest = text.split(begin, 1)
-    _, tail = rest.split(end, 1)
-    block = (f"{begin}\n- **Against CGAL 5.5, and threads** (`bench/run_peers_bench.sh {n}` → "
-             f"`results/peers/README.md`; this item is written by that script), {n} points: "
-             + "; ".join(summary) + ".\n" + end)
-    with open(readme + ".tmp", "w") as f:
-        f.write(head + block + tail)
-    os.replace(readme + ".tmp", readme)
+    replace_block(readme, "peers",
+                  f"- **Against CGAL 5.5, and threads** (`bench/run_peers_bench.sh {n}` → "
+                  f"`results/peers/README.md`; this item is written by that script), {n} points: "
+                  + "; ".join(summary) + ".")
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The algorithm variants at scale, with the CLI's own --stats: walking vs conflict graph, array
 # vs face-hash storage, on 10^6 uniform points, and the default engine on 10^7 points. Writes
-# results/variants/*.json and results/variants/README.md.
+# results/variants/*.json, results/variants/README.md and the variants item of the top README.
 #   bench/run_variants.sh [N] [BIG_N]    (defaults 1000000 and 10000000)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,5 +24,6 @@ for variant in "walk array" "conflict-graph array" "walk hash" "conflict-graph h
 done
 "$cavity" generate cube "$big" --seed 1 -o "$work/big.node" >/dev/null
 "$cavity" triangulate "$work/big.node" -o "$work/big" --quiet --stats "$out/cube-$big-walk-array.json"
-/usr/bin/python3 bench/variants_report.py "$out" "$(uptime | sed 's/.*load average: //')" > "$out/README.md"
+/usr/bin/python3 bench/variants_report.py "$out" "$(uptime | sed 's/.*load average: //')" \
+  --readme README.md > "$out/README.md"
 cat "$out/README.md"

@@ -1,10 +1,20 @@
-"""Tabulates the --stats JSON files of bench/run_variants.sh as results/variants/README.md."""
+"""Tabulates the --stats JSON files of bench/run_variants.sh as results/variants/README.md.
+
+usage: variants_report.py FOLDER LOAD [--readme README.md]
+The page goes to stdout; with --readme, the item between "<!-- variants:begin -->" and
+"<!-- variants:end -->" of that file is rewritten from the same files.
+"""
 import glob
 import json
 import os
 import sys
 
+from readme_block import replace_block
+
+if len(sys.argv) not in (3, 5) or (len(sys.argv) == 5 and sys.argv[3] != "--readme"):
+    sys.exit(__doc__)
 folder, load = sys.argv[1], sys.argv[2]
+readme = sys.argv[4] if len(sys.argv) == 5 else None
 runs = []
 for path in sorted(glob.glob(os.path.join(folder, "*.json"))):
     d = json.load(open(path))
@@ -35,3 +45,33 @@ for d in runs:
     print(f"- {d['locate']} + {d['storage']} at {d['points']}: time × "
           f"{d['timings']['triangulate_s'] / r['timings']['triangulate_s']:.2f}, memory × "
           f"{d['peak_rss_bytes'] / r['peak_rss_bytes']:.2f}")
+
+
+def readme_item():
+    """The top README's summary: the largest walk run against the 24 GiB goal, and the variants'
+    time and memory ratios at the size where all four ran."""
+    walk = [d for d in runs if d["locate"] == "walk" and d["storage"] == "array"]
+    largest = max(walk, key=lambda d: d["points"])
+    n = largest["points"]
+    gib = largest["peak_rss_bytes"] / 2**30
+    parts = [f"{n} points triangulate in {gib:.2f} GiB peak (goal: "
+             f"within 24 GiB, {'met' if gib <= 24 else '**not met**'}), "
+             f"{1e6 * largest['timings']['triangulate_s'] / n:.1f} µs/point instrumented"]
+    for size in sorted(ref):
+        r = ref[size]
+        ratio = {(d["locate"], d["storage"]): d for d in runs if d["points"] == size and d is not r}
+        graph, hashed = ratio.get(("conflict-graph", "array")), ratio.get(("walk", "hash"))
+        if graph is None or hashed is None:
+            continue
+        parts.append(
+            f"at {size} points the conflict graph takes "
+            f"{graph['timings']['triangulate_s'] / r['timings']['triangulate_s']:.1f}× the walk's time and "
+            f"{graph['peak_rss_bytes'] / r['peak_rss_bytes']:.1f}× its memory, the book's face hash table "
+            f"{hashed['timings']['triangulate_s'] / r['timings']['triangulate_s']:.1f}× the time and "
+            f"{hashed['peak_rss_bytes'] / r['peak_rss_bytes']:.1f}× the memory of the array storage")
+    return ("- **Variants at scale** (`bench/run_variants.sh` → `results/variants/README.md`; this item "
+            "is written by that script), uniform points: " + "; ".join(parts) + ".")
+
+
+if readme:
+    replace_block(readme, "variants", readme_item())
