@@ -484,7 +484,8 @@ def report(rows, models, args, elapsed, load):
         r = by.get((m, "cavity --protect"))
         if r and r["status"] == "refused":
             why = re.sub(r"^cavity: [^:\s]*(:\d+)?: ", "", r["reason"])
-            reasons[re.sub(r"-?\b\d+(\.\d+)?(e-?\d+)?\b", "N", why)[:110]] += 1
+            # A minus sign after a digit joins two numbers ("edge 3-17"), it negates none.
+            reasons[re.sub(r"(?<![\d.])-?\d+(\.\d+)?(e-?\d+)?", "N", why)[:110]] += 1
     if reasons:
         p("\nWhy `cavity cdt --protect` refused (numbers replaced by N):\n")
         for why, n in reasons.most_common(8):
