@@ -79,7 +79,7 @@ Box facet_box(const Plc& plc, const PlcFacet& facet) {
 struct BoxedMesh {
     std::span<const std::array<std::uint32_t, 4>> tets;
     std::vector<Box> tet_boxes;
-    std::vector<Triangle> triangles;
+    std::vector<Triangle> triangles;  ///< each sorted, in increasing order
     std::vector<Box> triangle_boxes;
 };
 
@@ -155,6 +155,21 @@ bool in_facet(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane, co
     return in_facet_region(plc, facet, plane, centroid);
 }
 
+/// A polygon that is one triangle without hole points, when the mesh has that triangle: then it is
+/// the polygon's only face, and a valid complex has no tetrahedron crossing it (the reason is
+/// covering_faces'). Most polygons of a surface mesh are met here, without rational arithmetic.
+std::optional<Triangle> facet_triangle(const PlcFacet& facet, const BoxedMesh& mesh) {
+    if (facet.loops.size() != 1 || facet.loops[0].size() != 3 || !facet.holes.empty()) {
+        return std::nullopt;
+    }
+    Triangle g{facet.loops[0][0], facet.loops[0][1], facet.loops[0][2]};
+    std::sort(g.begin(), g.end());
+    if (!std::binary_search(mesh.triangles.begin(), mesh.triangles.end(), g)) {
+        return std::nullopt;
+    }
+    return g;
+}
+
 /// The whole hull's shortcut: the facet's triangles found from its corners outward, through the
 /// triangles around the vertices of those already found, when their area is the facet's area;
 /// nullopt otherwise (the caller then scans every simplex). Why this is the same answer. The
@@ -219,6 +234,11 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
                                     bool carved,
                                     Report& report) {
     const PlcFacet& facet = plc.facets[index];
+    if (!carved) {
+        if (auto same = facet_triangle(facet, mesh)) {
+            return {*same};
+        }
+    }
     const std::string name = facet_name(plc, index);
     const auto plane = ExactPlane::of_facet(plc, facet);
     std::vector<Triangle> faces;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <queue>
 #include <string>
 #include <unordered_set>
@@ -376,6 +377,33 @@ private:
     std::uint64_t next_order_ = 0;
 };
 
+/// A polygon that is one triangle without hole points and already a face of the complex: R is
+/// empty (a face of a triangulation crosses no tetrahedron), so FlipInsertPolygon makes no flip
+/// and returns that triangle. Checked first because a surface mesh's polygons are mostly such
+/// triangles, and the general path builds the polygon's exact plane in rational arithmetic. Its
+/// work is recorded as the general path's would be, with the edge walk and ring as rotary steps.
+std::optional<std::array<VertexId, 3>> present_triangle(const ArrayStorage& storage,
+                                                        const Geometry& geometry,
+                                                        const Plc& plc,
+                                                        std::size_t facet,
+                                                        PolygonInsertionCounters& counters) {
+    const PlcFacet& polygon = plc.facets[facet];
+    if (polygon.loops.size() != 1 || polygon.loops[0].size() != 3 || !polygon.holes.empty()) {
+        return std::nullopt;
+    }
+    const std::array<VertexId, 3> abc{
+        polygon.loops[0][0], polygon.loops[0][1], polygon.loops[0][2]};
+    PolygonWork work;
+    work.facet = static_cast<std::uint32_t>(facet);
+    if (!is_face(storage, geometry, abc, work.rotary_steps)) {
+        return std::nullopt;
+    }
+    counters.rotary_steps += work.rotary_steps;
+    counters.per_polygon.push_back(work);
+    ++counters.polygons;
+    return sorted_triangle(abc);
+}
+
 }  // namespace
 
 std::vector<std::array<VertexId, 3>> insert_polygon(ArrayStorage& storage,
@@ -384,6 +412,10 @@ std::vector<std::array<VertexId, 3>> insert_polygon(ArrayStorage& storage,
                                                     std::size_t facet,
                                                     ConstrainedFaces& constrained,
                                                     PolygonInsertionCounters& counters) {
+    if (auto present = present_triangle(storage, geometry, plc, facet, counters)) {
+        constrained.insert(*present);
+        return {*present};
+    }
     auto triangles = PolygonInserter(storage, geometry, plc, facet, constrained, counters).run();
     CAVITY_EXPENSIVE_CHECK(check_complex(storage, geometry), "the complex after a polygon");
     return triangles;

@@ -241,4 +241,18 @@ PolygonRegion find_polygon_region(const ArrayStorage& storage, FacetGeometry& fa
     return region;
 }
 
+bool is_face(const ArrayStorage& storage,
+             const Geometry& geometry,
+             const std::array<VertexId, 3>& abc,
+             std::uint64_t& steps) {
+    const TetId t = tet_with_edge(storage, geometry, abc[0], abc[1], steps);
+    if (t == kNoTet) {
+        return false;
+    }
+    const TetVertices& w = storage.vertices(t);
+    const EdgeRing around = edge_ring(storage, t, slot_of(w, abc[0]), slot_of(w, abc[1]));
+    steps += around.tets.size();
+    return std::find(around.ring.begin(), around.ring.end(), abc[2]) != around.ring.end();
+}
+
 }  // namespace cavity::core

@@ -102,4 +102,12 @@ struct PolygonRegion {
 /// need not have a whole loop on its boundary. Doesn't change the complex.
 PolygonRegion find_polygon_region(const ArrayStorage& storage, FacetGeometry& facet);
 
+/// True when triangle abc is a face of the complex (ghosts present): a tetrahedron with edge ab
+/// is found by the walk of step 1, and c is on the ring around ab. Steps are counted as the
+/// rotary search's.
+bool is_face(const ArrayStorage& storage,
+             const Geometry& geometry,
+             const std::array<VertexId, 3>& abc,
+             std::uint64_t& steps);
+
 }  // namespace cavity::core
