@@ -1,8 +1,10 @@
 // cavity against CGAL's Delaunay_triangulation_3 (Epick, range insertion with its spatial sort)
-// on the same points in the same process, and cavity's parallel construction (--threads T) beside
-// its sequential engine. Prints one CSV row per (distribution, n, engine, run): the CPU and wall
-// seconds for order + triangulation, the tetrahedra, and peak memory when one engine runs alone
-// (--only). The ratios are made by bench/peers_report.py.
+// on the same points in the same process, cavity's parallel construction (--threads T) beside its
+// sequential engine, and the optional engines of peer_engines.h (HXT) when the build has them.
+// The points are generated (--dist, --n) or read from a file (--points: .node, .xyz, .ply, as
+// `cavity triangulate` reads them). Prints one CSV row per (input, n, engine, run): the CPU and
+// wall seconds for order + triangulation, the tetrahedra, and peak memory when one engine runs
+// alone (--only). The ratios are made by bench/peers_report.py.
 
 #include <algorithm>
 #include <cstdio>
@@ -16,8 +18,10 @@
 #include <sys/resource.h>
 
 #include "cavity/core/gen/generate.h"
+#include "cavity/core/io/point_io.h"
 #include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
+#include "peer_engines.h"
 
 namespace {
 
@@ -67,6 +71,12 @@ Run run_cavity(const cavity::core::PointSet& points, unsigned threads) {
     return since(start, tri.tets.size());
 }
 
+Run run_prepared(const peers::PreparedRun& run) {
+    const Stamp start;
+    const std::size_t tets = run();
+    return since(start, tets);
+}
+
 Run run_cgal(const cavity::core::PointSet& points) {
     std::vector<Kernel::Point_3> cgal_points;
     cgal_points.reserve(points.size());
@@ -82,14 +92,17 @@ Run run_cgal(const cavity::core::PointSet& points) {
 
 int main(int argc, char** argv) {
     std::string distribution = "cube";
+    std::string points_file;  // when given, the input instead of a generated distribution
     std::size_t n = 100000;
     int repeats = 3;
-    unsigned threads = 2;  // of the engine "cavity-threads"
-    std::string only;      // "cavity", "cgal" or "cavity-threads": one engine alone, for its memory
+    unsigned threads = 2;  // of the engines "cavity-threads" and "hxt-threads"
+    std::string only;      // one engine alone, for its memory
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
         if (flag == "--dist") {
             distribution = argv[i + 1];
+        } else if (flag == "--points") {
+            points_file = argv[i + 1];
         } else if (flag == "--n") {
             n = std::strtoull(argv[i + 1], nullptr, 10);
         } else if (flag == "--repeats") {
@@ -100,31 +113,49 @@ int main(int argc, char** argv) {
             threads = static_cast<unsigned>(std::strtoul(argv[i + 1], nullptr, 10));
         } else {
             std::fprintf(stderr,
-                         "usage: %s [--dist D] [--n N] [--repeats R] [--threads T] "
-                         "[--only cavity|cgal|cavity-threads]\n",
+                         "usage: %s [--dist D --n N | --points FILE] [--repeats R] [--threads T] "
+                         "[--only ENGINE]\n",
                          argv[0]);
             return 2;
         }
     }
-    const auto points =
-        cavity::core::generate_points(distribution, n, 1, cavity::core::WeightSpec{});
+    const auto points = points_file.empty() ? cavity::core::generate_points(
+                                                  distribution, n, 1, cavity::core::WeightSpec{})
+                                            : cavity::core::read_points(points_file, false);
+    const std::string input = points_file.empty() ? distribution : points_file;
+    const std::vector<peers::PeerEngine> optional = peers::optional_engines(threads);
+    std::vector<std::string> engines{"cavity", "cgal", "cavity-threads"};
+    for (const auto& e : optional) {
+        engines.push_back(e.name);
+    }
     const std::uint64_t baseline_rss = peak_rss_bytes();
-    const char* const engines[] = {"cavity", "cgal", "cavity-threads"};
     for (int r = 0; r < repeats; ++r) {
         // Rotate which engine goes first so none always meets a cold cache.
-        for (int k = 0; k < 3; ++k) {
-            const std::string engine = engines[(k + r) % 3];
+        for (std::size_t k = 0; k < engines.size(); ++k) {
+            const std::string& engine = engines[(k + static_cast<std::size_t>(r)) % engines.size()];
             if (!only.empty() && only != engine) {
                 continue;
             }
-            const Run run = engine == "cgal"     ? run_cgal(points)
-                            : engine == "cavity" ? run_cavity(points, 0)
-                                                 : run_cavity(points, threads);
+            unsigned engine_threads = engine == "cavity-threads" ? threads : 1u;
+            Run run{};
+            if (engine == "cgal") {
+                run = run_cgal(points);
+            } else if (engine == "cavity") {
+                run = run_cavity(points, 0);
+            } else if (engine == "cavity-threads") {
+                run = run_cavity(points, threads);
+            } else {
+                const auto& peer = *std::find_if(optional.begin(),
+                                                 optional.end(),
+                                                 [&](const auto& e) { return e.name == engine; });
+                engine_threads = peer.threads;
+                run = run_prepared(peer.prepare(points));
+            }
             std::printf("%s,%zu,%s,%u,%d,%.6f,%.6f,%zu,%llu,%llu\n",
-                        distribution.c_str(),
+                        input.c_str(),
                         points.size(),
                         engine.c_str(),
-                        engine == "cavity-threads" ? threads : 1u,
+                        engine_threads,
                         r,
                         run.seconds,
                         run.wall_seconds,

@@ -1,30 +1,49 @@
 #!/usr/bin/env bash
-# cavity against CGAL's Delaunay_triangulation_3 (Epick), and cavity's parallel construction
-# against its sequential engine: time in the same process, and whole-process peak memory of each
-# engine run alone. Writes results/peers/peers.csv and results/peers/README.md.
-#   bench/run_peers_bench.sh [N]      N points (default 1000000; the grid is round(cbrt N)^3)
-#   THREADS=T (default 2) threads for the parallel construction; REPEATS=R (default 3)
+# cavity against CGAL's Delaunay_triangulation_3 (Epick) and, when its source is given, HXT; and
+# cavity's parallel construction against its sequential engine: time in the same process, and
+# whole-process peak memory of each engine run alone. Writes results/peers/peers.csv,
+# results/peers/README.md and the peers item of the top README.
+#   bench/run_peers_bench.sh [N]           generated cube, grid and sphere of N points (default
+#                                          1000000; the grid is round(cbrt N)^3)
+#   bench/run_peers_bench.sh FILE...       the given point files (.node, .xyz, .ply), e.g. held out
+#   THREADS=T (default 2) threads for the parallel engines; REPEATS=R (default 3)
+#   HXT_SOURCE=<gmsh>/contrib/hxt          also time HXT, built from that source by bench/CMakeLists
 set -euo pipefail
 cd "$(dirname "$0")/.."
-n="${1:-1000000}"
 repeats="${REPEATS:-3}"
 threads="${THREADS:-2}"
 build="${BUILD_DIR:-build/release}"
+inputs=()
+if [ $# -eq 0 ] || { [ $# -eq 1 ] && [[ "$1" =~ ^[0-9]+$ ]]; }; then
+  n="${1:-1000000}"
+  label="$n"
+  for dist in cube grid sphere; do inputs+=("--dist $dist --n $n"); done
+else
+  label="$*"
+  for file in "$@"; do
+    [ -f "$file" ] || { echo "run_peers_bench.sh: no point file $file" >&2; exit 1; }
+    inputs+=("--points $file")
+  done
+fi
 scripts/install-deps.sh
-cmake --preset release >/dev/null
+cmake --preset release -DCAVITY_PEERS_HXT_SOURCE="${HXT_SOURCE:-}" >/dev/null
 cmake --build "$build" --target peers_bench
 bin="$build/bench/peers_bench"
+engines="cavity cgal cavity-threads"
+if [ -n "${HXT_SOURCE:-}" ]; then engines="$engines hxt hxt-threads"; fi
 out=results/peers
 mkdir -p "$out"
 csv="$out/peers.csv.tmp"
 echo "distribution,n,engine,threads,run,seconds,wall_seconds,tets,peak_rss_bytes,baseline_rss_bytes" > "$csv"
-for dist in cube grid sphere; do
-  "$bin" --dist "$dist" --n "$n" --repeats "$repeats" --threads "$threads" >> "$csv"
-  for engine in cavity cgal cavity-threads; do
-    "$bin" --dist "$dist" --n "$n" --repeats 1 --threads "$threads" --only "$engine" >> "$csv"
+for input in "${inputs[@]}"; do
+  # shellcheck disable=SC2086  # each input is its own flags
+  "$bin" $input --repeats "$repeats" --threads "$threads" >> "$csv"
+  for engine in $engines; do
+    # shellcheck disable=SC2086
+    "$bin" $input --repeats 1 --threads "$threads" --only "$engine" >> "$csv"
   done
 done
 mv "$csv" "$out/peers.csv"
-/usr/bin/python3 bench/peers_report.py "$out/peers.csv" "$n" "$(uptime | sed 's/.*load average: //')" \
+/usr/bin/python3 bench/peers_report.py "$out/peers.csv" "$label" "$(uptime | sed 's/.*load average: //')" \
   --readme README.md > "$out/README.md"
 cat "$out/README.md"
