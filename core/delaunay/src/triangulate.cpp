@@ -60,9 +60,10 @@ void check_input(const PointSet& input, std::span<const std::uint32_t> sequence)
 Prepared prepare(const PointSet& input,
                  std::span<const std::uint32_t> sequence,
                  BootstrapRule rule,
-                 Triangulation& out) {
+                 Triangulation& out,
+                 unsigned threads) {
     check_input(input, sequence);
-    const auto first = first_occurrences(input.points, input.weights);
+    const auto first = first_occurrences(input.points, input.weights, threads);
     std::vector<std::uint32_t> order;
     order.reserve(sequence.size());
     for (std::uint32_t i : sequence) {

@@ -12,7 +12,7 @@ Triangulation triangulate_in_parallel(const PointSet& points,
                                       std::span<const std::uint32_t> sequence,
                                       const TriangulateOptions& options) {
     Triangulation out;
-    const Prepared prep = prepare(points, sequence, options.bootstrap, out);
+    const Prepared prep = prepare(points, sequence, options.bootstrap, out, options.threads);
     ParallelOptions parallel;
     parallel.threads = options.threads;
     parallel.seed = options.seed;

@@ -4,51 +4,14 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
-#include <exception>
-#include <thread>
 #include <vector>
+
+#include "canonical_rotation.h"
+#include "in_pieces.h"
 
 namespace cavity::core {
 
 namespace {
-
-/// New slot s of a record holds old slot perm[s].
-using Perm = std::array<std::uint8_t, 4>;
-
-/// The order of ids the canonical order sorts by: the ghost vertex below every vertex.
-constexpr std::uint32_t rank_of(VertexId v) {
-    return v == kGhostVertex ? 0 : v + 1;
-}
-
-Perm canonical_perm(const TetVertices& v) {
-    const auto lowest = [&](std::initializer_list<std::uint8_t> slots) {
-        std::uint8_t best = *slots.begin();
-        for (std::uint8_t s : slots) {
-            if (rank_of(v[s]) < rank_of(v[best])) {
-                best = s;
-            }
-        }
-        return best;
-    };
-    if (is_ghost(v)) {
-        const std::uint8_t m = lowest({0, 1, 2});
-        return {
-            m, static_cast<std::uint8_t>((m + 1) % 3), static_cast<std::uint8_t>((m + 2) % 3), 3};
-    }
-    // The even permutations that bring each slot first (double transpositions), then a 3-cycle of
-    // the last three: both keep the orientation.
-    constexpr std::array<Perm, 4> kFirst{{{0, 1, 2, 3}, {1, 0, 3, 2}, {2, 3, 0, 1}, {3, 2, 1, 0}}};
-    Perm p = kFirst[lowest({0, 1, 2, 3})];
-    const std::uint8_t k = rank_of(v[p[2]]) < rank_of(v[p[1]])
-                               ? (rank_of(v[p[3]]) < rank_of(v[p[2]]) ? 3 : 2)
-                               : (rank_of(v[p[3]]) < rank_of(v[p[1]]) ? 3 : 1);
-    if (k == 2) {
-        p = {p[0], p[2], p[3], p[1]};
-    } else if (k == 3) {
-        p = {p[0], p[3], p[1], p[2]};
-    }
-    return p;
-}
 
 /// The three lower ranks of a tetrahedron, highest first: how tetrahedra with the same highest
 /// vertex are ordered.
@@ -79,32 +42,6 @@ std::uint32_t top_rank(const TetVertices& v) {
 }
 
 }  // namespace
-
-/// Runs body(k, begin, end) on the `threads` consecutive pieces k of [0, count) at once; rethrows
-/// the first exception a piece threw.
-template <class Body>
-void in_pieces(std::size_t count, unsigned threads, Body&& body) {
-    std::vector<std::exception_ptr> errors(threads);
-    const auto piece = [&](unsigned k) {
-        try {
-            body(k, count * k / threads, count * (k + 1) / threads);
-        } catch (...) {
-            errors[k] = std::current_exception();
-        }
-    };
-    {
-        std::vector<std::jthread> helpers;
-        for (unsigned k = 1; k < threads; ++k) {
-            helpers.emplace_back(piece, k);
-        }
-        piece(0);
-    }
-    for (const std::exception_ptr& e : errors) {
-        if (e) {
-            std::rethrow_exception(e);
-        }
-    }
-}
 
 CanonicalOrder canonical_order(ConcurrentMesh& mesh, std::size_t vertices, unsigned threads) {
     const std::size_t used = mesh.used();
@@ -212,45 +149,6 @@ void store_canonically(ConcurrentMesh& mesh,
     });
     mesh.clear();
     storage.assign(std::move(records), vertices);
-}
-
-std::size_t list_canonically(ConcurrentMesh& mesh,
-                             const Geometry& geometry,
-                             unsigned threads,
-                             std::vector<std::array<std::uint32_t, 4>>& tets) {
-    const CanonicalOrder canonical = canonical_order(mesh, geometry.size(), threads);
-    const std::vector<TetId>& order = canonical.order;
-    // Each piece's solid tetrahedra are counted first, to know where its part of the list starts.
-    std::vector<std::size_t> solid_before(threads + 1, 0);
-    in_pieces(order.size(), threads, [&](unsigned k, std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-            solid_before[k + 1] += is_ghost(mesh.record(order[i]).v) ? 0 : 1;
-        }
-    });
-    for (unsigned k = 0; k < threads; ++k) {
-        solid_before[k + 1] += solid_before[k];
-    }
-    tets.resize(solid_before[threads]);
-    in_pieces(order.size(), threads, [&](unsigned k, std::size_t begin, std::size_t end) {
-        std::size_t at = solid_before[k];
-        for (std::size_t i = begin; i < end; ++i) {
-            const TetVertices& from = mesh.record(order[i]).v;
-            if (is_ghost(from)) {
-                continue;
-            }
-            const std::uint64_t own = canonical.renumber[order[i]];
-            TetVertices v{};
-            for (std::size_t g = 0; g < 4; ++g) {
-                v[(own >> (2 * g)) & 3u] = from[g];
-            }
-            // The stored orientation mirrored, as every list of tetrahedra is handed out
-            // (detail::drain_into, handedness.h).
-            tets[at++] = {
-                geometry.key(v[1]), geometry.key(v[0]), geometry.key(v[2]), geometry.key(v[3])};
-        }
-    });
-    mesh.clear();
-    return order.size() - tets.size();
 }
 
 }  // namespace cavity::core

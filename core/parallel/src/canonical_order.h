@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "cavity/core/geometry/geometry.h"
 #include "cavity/core/mesh/array_storage.h"
 #include "concurrent_mesh.h"
 
@@ -26,15 +25,6 @@ void store_canonically(ConcurrentMesh& mesh,
                        ArrayStorage& storage,
                        std::size_t vertices,
                        unsigned threads);
-
-/// The solid tetrahedra of `mesh` in the same order and rotation, as input indices with positive
-/// right-hand volume (the form of Triangulation::tets): what store_canonically followed by
-/// ArrayStorage::drain gives, without building the storage or renumbering neighbours. Returns the
-/// number of hull triangles (ghosts). `mesh` is emptied.
-std::size_t list_canonically(ConcurrentMesh& mesh,
-                             const Geometry& geometry,
-                             unsigned threads,
-                             std::vector<std::array<std::uint32_t, 4>>& tets);
 
 /// The live slots in canonical order, and for each slot its rotation, stored inverted (old slot g
 /// of a record becomes new slot (renumber >> 2g) & 3), with its new position above bit 8.

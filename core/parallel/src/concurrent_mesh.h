@@ -4,6 +4,9 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <memory>
+#include <new>
 #include <vector>
 
 #include "cavity/core/mesh/array_storage.h"
@@ -33,17 +36,30 @@ public:
     static constexpr std::uint8_t kCavityBit = 0x80;
 
     /// Makes room for `slots` slots; the new ones are dead and free. No thread may run.
+    ///
+    /// The records are not initialised: a slot is written when a thread makes a tetrahedron in
+    /// it, and read only while live. So their pages are first touched by the threads that claim
+    /// them, each in its own blocks, not zeroed here on one thread (about 0.1 s for the 220 MB of
+    /// 10^6 points).
     void grow(std::size_t slots) {
-        records_.resize(slots);
+        const std::size_t keep = used();
+        RecordArray records(static_cast<ArrayRecord*>(
+            ::operator new (slots * sizeof(ArrayRecord), std::align_val_t{alignof(ArrayRecord)})));
+        if (keep > 0) {
+            // Bytes, not records: slots of a block that were never handed out hold garbage.
+            std::memcpy(records.get(), records_.get(), keep * sizeof(ArrayRecord));
+        }
+        records_ = std::move(records);
+        capacity_ = slots;
         owner_.resize(slots, kFree);
         alive_.resize(slots / 64 + 1, 0);
-        next_.store(std::min<std::size_t>(next_.load(), capacity()));
+        next_.store(keep);
     }
 
-    std::size_t capacity() const { return records_.size(); }
+    std::size_t capacity() const { return capacity_; }
 
     std::size_t bytes() const {
-        return records_.capacity() * sizeof(ArrayRecord) + owner_.capacity() +
+        return capacity_ * sizeof(ArrayRecord) + owner_.capacity() +
                alive_.capacity() * sizeof(std::uint64_t);
     }
 
@@ -111,13 +127,10 @@ public:
         }
     }
 
-    /// Hands the records over (slot t is element t; dead slots hold garbage); the liveness bits
-    /// stay readable until clear(). No thread may run.
-    std::vector<ArrayRecord> take_records() { return std::move(records_); }
-
     /// Frees the memory. No thread may run.
     void clear() {
-        std::vector<ArrayRecord>().swap(records_);
+        records_.reset();
+        capacity_ = 0;
         std::vector<std::uint8_t>().swap(owner_);
         std::vector<std::uint64_t>().swap(alive_);
         next_.store(0);
@@ -140,7 +153,16 @@ public:
     };
 
 private:
-    std::vector<ArrayRecord> records_;
+    struct FreeRecords {
+        void operator()(ArrayRecord* records) const {
+            ::operator delete (records, std::align_val_t{alignof(ArrayRecord)});
+        }
+    };
+
+    using RecordArray = std::unique_ptr<ArrayRecord[], FreeRecords>;
+
+    RecordArray records_;
+    std::size_t capacity_ = 0;
     std::vector<std::uint8_t> owner_;
     std::vector<std::uint64_t> alive_;
     std::atomic<std::size_t> next_{0};

@@ -10,6 +10,7 @@
 #include <thread>
 #include <utility>
 
+#include "canonical_list.h"
 #include "canonical_order.h"
 #include "cavity/core/base/error.h"
 #include "concurrent_mesh.h"

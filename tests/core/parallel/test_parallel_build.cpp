@@ -4,7 +4,9 @@
 // hand-back path runs on every input of the degenerate corpus.
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -73,6 +75,34 @@ Built build_forced(const PointSet& ps, unsigned threads) {
     return out;
 }
 
+/// list_in_parallel with the same thresholds: the solid tetrahedra as triangulate() hands them
+/// out, and the number of hull triangles.
+struct Listed {
+    Tets tets;
+    std::size_t hull_triangles = 0;
+};
+
+Listed list_forced(const PointSet& ps, unsigned threads) {
+    Triangulation scratch;
+    const detail::Prepared prep = detail::prepare(ps, brio(ps), BootstrapRule::kWidest, scratch);
+    ParallelOptions options;
+    options.threads = threads;
+    options.min_points_per_thread = 1;
+    options.lone_retry_below = 1;
+    Listed out;
+    out.hull_triangles = list_in_parallel(prep.geometry, options, out.tets).hull_triangles;
+    return out;
+}
+
+/// The stored order's solid tetrahedra as the API lists them (the first two vertices swapped).
+Tets mirrored_solid(const Built& built) {
+    Tets out;
+    for (const auto& t : built.solid) {
+        out.push_back({t[1], t[0], t[2], t[3]});
+    }
+    return out;
+}
+
 TEST(ParallelBuild, SameTetrahedraAsTheSequentialEngineForEveryThreadCount) {
     const PointSet ps = generate_points("cube", 40000, 7);
     const Tets expected = canonical(triangulate(ps, brio(ps), TriangulateOptions{}).tets);
@@ -127,6 +157,32 @@ TEST(ParallelBuild, CollidingThreadsOnTheDegenerateCorpus) {
             const Built many = build_forced(c.points, threads);
             EXPECT_EQ(many.stored, one.stored);
             EXPECT_EQ(many.redundant, sequential.redundant);
+        }
+    }
+}
+
+TEST(ParallelBuild, TheListFollowsTheStoredOrderOnEveryInput) {
+    // The list path sorts in buckets of highest ids spread by slot pieces: on inputs with many
+    // buckets, degenerate ones and weighted ones it must give the stored order exactly, for
+    // every thread count.
+    std::vector<std::pair<std::string, PointSet>> inputs;
+    for (const test::CorpusCase& c : test::degenerate_corpus()) {
+        inputs.emplace_back(c.name, c.points);
+    }
+    inputs.emplace_back("cube", generate_points("cube", 20000, 4));
+    inputs.emplace_back(
+        "weighted grid",
+        generate_points("grid", 6000, 3, WeightSpec{WeightSpec::Kind::kUniform, 0, 3.0}));
+    for (const auto& [name, ps] : inputs) {
+        SCOPED_TRACE(name);
+        const Built stored = build_forced(ps, 1);
+        const Tets expected = mirrored_solid(stored);
+        const std::size_t hull = stored.stored.size() - stored.solid.size();
+        for (unsigned threads : {1u, 2u, 3u, 4u}) {
+            SCOPED_TRACE(threads);
+            const Listed listed = list_forced(ps, threads);
+            EXPECT_EQ(listed.tets, expected);
+            EXPECT_EQ(listed.hull_triangles, hull);
         }
     }
 }

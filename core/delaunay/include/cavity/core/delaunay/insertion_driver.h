@@ -37,11 +37,13 @@ struct Prepared {
 /// Checks the input (finite coordinates and weights, one weight per point, the sequence a
 /// permutation), removes repeats (keeping the lowest index), puts the bootstrap four (by `rule`)
 /// first and lays the points out in insertion order. Throws Error naming the problem, or when there
-/// is no 3D triangulation.
+/// is no 3D triangulation. Up to `threads` threads look for the repeats (the same result for
+/// every count).
 Prepared prepare(const PointSet& input,
                  std::span<const std::uint32_t> sequence,
                  BootstrapRule rule,
-                 Triangulation& out);
+                 Triangulation& out,
+                 unsigned threads = 1);
 
 /// The full conflict graph's own count of the conflicts goes into the counters; when the
 /// conflict-counting observer has counted them too, the two independent counts must agree to the

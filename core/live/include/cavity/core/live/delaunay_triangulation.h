@@ -182,7 +182,8 @@ DelaunayTriangulation::DelaunayTriangulation(const PointSet& points,
                                              Observer& observer) {
     require_supported(options, Observer::kCounting);
     Triangulation built;
-    detail::Prepared prep = detail::prepare(points, sequence, options.bootstrap, built);
+    detail::Prepared prep =
+        detail::prepare(points, sequence, options.bootstrap, built, options.threads);
     state_ = std::make_unique<State>(std::move(prep.geometry), points, options.seed);
     const detail::RunEnd end =
         options.threads > 0
