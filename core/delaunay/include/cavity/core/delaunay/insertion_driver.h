@@ -70,7 +70,7 @@ RunEnd run(const Geometry& geometry,
     // A prefix run inserts the first `last` points; the others are only counted as conflicts.
     const std::size_t last =
         options.prefix == 0 ? n : std::clamp<std::size_t>(options.prefix, 4, n);
-    storage.reserve(7 * last + 64, n);
+    storage.reserve(7 * last + 64);
     BowyerWatson<Storage, Observer> engine(geometry, storage, observer);
     observer.on_start(geometry);
     engine.bootstrap(0, 1, 2, 3);
