@@ -27,10 +27,9 @@ namespace cavity::core {
 
 namespace detail {
 
-/// The insertion sequence without repeats, the bootstrap four first, and the engine's view of the
-/// points in that order.
+/// The engine's view of the points in insertion order, without repeats, the bootstrap four first
+/// (its keys are that sequence: no second copy of it lives through the build).
 struct Prepared {
-    std::vector<std::uint32_t> sequence;
     Geometry geometry;
 };
 
