@@ -21,7 +21,7 @@ std::vector<std::uint32_t> greedy_order(const core::PointSet& points) {
     const core::Geometry& geometry = prep.geometry;
     const std::size_t m = geometry.size();
     core::ArrayStorage storage;
-    storage.reserve(7 * m + 64, m);
+    storage.reserve(7 * m + 64);
     core::NullObserver observer;
     core::BowyerWatson<core::ArrayStorage, core::NullObserver> engine(geometry, storage, observer);
     engine.bootstrap(0, 1, 2, 3);

@@ -96,8 +96,7 @@ Prepared prepare(const PointSet& input,
             weights[r] = input.weights[seq[r]];
         }
     }
-    Geometry geometry(std::move(points), seq, std::move(weights));
-    return {std::move(seq), std::move(geometry)};
+    return {Geometry(std::move(points), std::move(seq), std::move(weights))};
 }
 
 void merge_conflict_tally(const ConflictTally& tally, Counters& counters, bool counted) {

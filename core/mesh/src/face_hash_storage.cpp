@@ -12,8 +12,8 @@ std::array<VertexId, 3> reversed(const std::array<VertexId, 3>& f) {
 
 }  // namespace
 
-void FaceHashStorage::reserve(std::size_t tets, std::size_t vertices) {
-    TetPool::reserve(tets, vertices);
+void FaceHashStorage::reserve(std::size_t tets) {
+    TetPool::reserve(tets);
     std::size_t size = 16;
     while (size < 8 * tets) {  // 4 faces per tetrahedron at load factor <= 1/2
         size *= 2;
@@ -98,7 +98,7 @@ void FaceHashStorage::erase(const std::array<VertexId, 3>& face) {
 
 TetId FaceHashStorage::add_tetrahedron(const TetVertices& v) {
     if (slots_.empty()) {
-        reserve(16, 16);
+        reserve(16);
     }
     const TetId t = allocate(v);
     for (int f = 0; f < 4; ++f) {

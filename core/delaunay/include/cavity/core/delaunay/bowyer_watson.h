@@ -84,7 +84,7 @@ public:
     }
 
     /// InsertVertex3D(u, t0): t0 must conflict with u. Deletes every tetrahedron in conflict with
-    /// u (a depth-first search from t0 through conflicting neighbours: DigCavity3D, dig_cavity.h,
+    /// u (a breadth-first search from t0 through conflicting neighbours: DigCavity3D, dig_cavity.h,
     /// the loop the constrained insertion of the CDT shares) and fills the
     /// cavity with one new tetrahedron per cavity face. As in the book's pseudocode, a tetrahedron
     /// outside the cavity is tested once for every cavity face it borders (remembering the verdicts
@@ -105,7 +105,7 @@ public:
             gluer_.reserve(geometry_.size());  // a live triangulation's geometry grows
         }
         Digger digger{*this, u};
-        dig_cavity(storage_, t0, stack_, digger);
+        dig_cavity(storage_, t0, queue_, digger);
         if constexpr (Storage::kExplicitAdjacency) {
             gluer_.glue(storage_, std::span<const TetId>(created_.begin(), created_.size()), u);
         }
@@ -127,8 +127,12 @@ public:
     const PodStack<TetId>& deleted() const { return deleted_; }
 
     /// For each tetrahedron the last insertion created: the deleted tetrahedron whose face it was
-    /// built on.
+    /// built on. Recorded only after record_cavity_faces().
     const PodStack<CavityFace>& cavity_faces() const { return cavity_faces_; }
+
+    /// Asks every later insertion to record its cavity faces: only the conflict graphs read them,
+    /// and the two stores per new tetrahedron are left out of the walk's insertions.
+    void record_cavity_faces() { record_cavity_faces_ = true; }
 
     /// Weighted only: vertices the last insertion submerged (no longer in the triangulation).
     const std::vector<VertexId>& vanished() const { return vanished_; }
@@ -206,7 +210,9 @@ private:
         const TetId t = add(v, step_);
         storage_.glue(half_facet(t, u_slot), across);
         created_.push_back(t);
-        cavity_faces_.push_back({inner, t});
+        if (record_cavity_faces_) {
+            cavity_faces_.push_back({inner, t});
+        }
         if (!is_ghost(v)) {
             last_solid_ = t;
         }
@@ -244,7 +250,8 @@ private:
     std::array<VertexId, 4> bootstrap_{};
     TetId last_solid_ = kNoTet;
     std::uint64_t step_ = 0;
-    PodStack<HalfFacet> stack_;  // deleted tetrahedra's faces still to look across
+    bool record_cavity_faces_ = false;
+    PodStack<HalfFacet> queue_;  // deleted tetrahedra whose faces are still to look across
     PodStack<TetId> created_;
     PodStack<TetId> deleted_;
     std::vector<VertexId> vanished_;

@@ -29,6 +29,7 @@ public:
     /// Locates every point after the bootstrap four in the first five cells.
     template <class Storage, class Observer>
     void start(BowyerWatson<Storage, Observer>& engine) {
+        engine.record_cavity_faces();
         const Geometry& geometry = engine.geometry();
         choose_interior_point(engine);
         const std::size_t n = geometry.size();

@@ -39,6 +39,7 @@ public:
 
     template <class Storage, class Observer>
     void start(BowyerWatson<Storage, Observer>& engine) {
+        engine.record_cavity_faces();
         const std::size_t n = engine.geometry().size();
         home_.assign(n, kNoTet);
         seen_.assign(n, 0);

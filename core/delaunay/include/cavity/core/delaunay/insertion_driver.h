@@ -27,10 +27,9 @@ namespace cavity::core {
 
 namespace detail {
 
-/// The insertion sequence without repeats, the bootstrap four first, and the engine's view of the
-/// points in that order.
+/// The engine's view of the points in insertion order, without repeats, the bootstrap four first
+/// (its keys are that sequence: no second copy of it lives through the build).
 struct Prepared {
-    std::vector<std::uint32_t> sequence;
     Geometry geometry;
 };
 
@@ -72,7 +71,7 @@ RunEnd run(const Geometry& geometry,
     // A prefix run inserts the first `last` points; the others are only counted as conflicts.
     const std::size_t last =
         options.prefix == 0 ? n : std::clamp<std::size_t>(options.prefix, 4, n);
-    storage.reserve(7 * last + 64, n);
+    storage.reserve(7 * last + 64);
     BowyerWatson<Storage, Observer> engine(geometry, storage, observer);
     observer.on_start(geometry);
     engine.bootstrap(0, 1, 2, 3);

@@ -23,7 +23,7 @@ class FaceHashStorage : public TetPool<HashRecord> {
 public:
     static constexpr bool kExplicitAdjacency = false;
 
-    void reserve(std::size_t tets, std::size_t vertices);
+    void reserve(std::size_t tets);
 
     TetId add_tetrahedron(const TetVertices& v);
 

@@ -21,7 +21,7 @@ concept TetStorage = requires(S store,
                               VertexId v,
                               const TetVertices& vertices,
                               std::size_t count) {
-    store.reserve(count, count);
+    store.reserve(count);
     { store.add_tetrahedron(vertices) } -> std::same_as<TetId>;
     store.delete_tetrahedron(t);
     store.glue(h, h);
