@@ -7,7 +7,10 @@
 //                    sphere x^2 + y^2 + z^2 = R^2 (insphere), weights that put the lifted points on
 //                    one hyperplane (orient4d).
 // Each benchmark cycles through 4096 pre-generated queries; the counters give the fraction decided
-// by each stage of the cavity predicate on that query set.
+// by each stage of the cavity predicate on that query set. The `static` rows (orient3d, insphere)
+// time the cascade the engine uses: a static filter for the bounding box of the whole query set,
+// then the cavity predicate (semi-static filter, adaptive, exact) when it defers; their `static`
+// counter is the fraction the static filter decides.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -22,8 +25,10 @@
 #include <benchmark/benchmark.h>
 
 #include "cavity/predicates/insphere.h"
+#include "cavity/predicates/insphere_static_filter.h"
 #include "cavity/predicates/oracle.h"
 #include "cavity/predicates/orient3d.h"
+#include "cavity/predicates/orient3d_static_filter.h"
 #include "cavity/predicates/orient4d.h"
 
 namespace {
@@ -137,6 +142,21 @@ Verdict staged(const InsphereQuery& q) {
 
 Verdict staged(const Orient4dQuery& q) {
     return cp::orient4d_staged(q[0], q[1], q[2], q[3], q[4]);
+}
+
+// The engine's cascade: the static filter first, the cavity predicate when it defers.
+Sign cascade(const cp::Orient3dStaticFilter& filter, const Orient3dQuery& q) {
+    if (const int s = filter.sign(q[0], q[1], q[2], q[3])) {
+        return static_cast<Sign>(s);
+    }
+    return cavity_orient3d(q);
+}
+
+Sign cascade(const cp::InsphereStaticFilter& filter, const InsphereQuery& q) {
+    if (const int s = filter.sign(q[0], q[1], q[2], q[3], q[4])) {
+        return static_cast<Sign>(s);
+    }
+    return cavity_insphere(q);
 }
 
 // ---- query generators --------------------------------------------------------------------------
@@ -290,6 +310,37 @@ void run(benchmark::State& state, const std::vector<Query>& queries, bool count_
     }
 }
 
+/// The static filter for the bounding box of every point of the queries.
+template <typename Filter, typename Query>
+Filter static_filter_for(const std::vector<Query>& queries) {
+    Point3 lo = queries.front()[0], hi = lo;
+    for (const Query& q : queries) {
+        for (const Point3& p : q) {
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+        }
+    }
+    return Filter(lo, hi);
+}
+
+/// Times the cascade (static filter for the query set's box, then the cavity predicate).
+template <typename Filter, typename Query>
+void run_cascade(benchmark::State& state, const std::vector<Query>& queries) {
+    const Filter filter = static_filter_for<Filter>(queries);
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const Sign s = cascade(filter, queries[i++ & (kQueries - 1)]);
+        benchmark::DoNotOptimize(s);
+    }
+    state.SetItemsProcessed(state.iterations());
+    double decided = 0.0;
+    for (const Query& q : queries) {
+        decided +=
+            std::apply([&](const auto&... p) { return filter.sign(p...); }, q) != 0 ? 1.0 : 0.0;
+    }
+    state.counters["static"] = decided / double(queries.size());
+}
+
 template <auto Cavity, auto Plain, auto Oracle, typename Query, typename Degenerate>
 void register_predicate(const std::string& name, Degenerate degenerate) {
     for (InputClass input :
@@ -300,6 +351,17 @@ void register_predicate(const std::string& name, Degenerate degenerate) {
         benchmark::RegisterBenchmark(
             ("BM_" + name + "/cavity" + suffix).c_str(),
             [queries](benchmark::State& s) { run<Cavity>(s, *queries, true); });
+        if constexpr (std::is_same_v<Query, Orient3dQuery>) {
+            benchmark::RegisterBenchmark(("BM_" + name + "/static" + suffix).c_str(),
+                                         [queries](benchmark::State& s) {
+                                             run_cascade<cp::Orient3dStaticFilter>(s, *queries);
+                                         });
+        } else if constexpr (std::is_same_v<Query, InsphereQuery>) {
+            benchmark::RegisterBenchmark(("BM_" + name + "/static" + suffix).c_str(),
+                                         [queries](benchmark::State& s) {
+                                             run_cascade<cp::InsphereStaticFilter>(s, *queries);
+                                         });
+        }
         benchmark::RegisterBenchmark(
             ("BM_" + name + "/plain" + suffix).c_str(),
             [queries](benchmark::State& s) { run<Plain>(s, *queries, false); });

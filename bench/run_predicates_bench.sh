@@ -39,12 +39,12 @@ for d in datas:
             continue
         name = b["run_name"]  # BM_<predicate>/<impl>/<class>
         m[name] = b["cpu_time"]
-        counters[name] = {k: b[k] for k in ("filter", "adaptive", "exact") if k in b}
+        counters[name] = {k: b[k] for k in ("filter", "adaptive", "exact", "static") if k in b}
     per_run.append(m)
 median = {k: statistics.median(r[k] for r in per_run if k in r) for k in per_run[-1]}
-def ratios(pred, cls):
-    return sorted(r[f"BM_{pred}/cavity/{cls}"] / r[f"BM_{pred}/plain/{cls}"] for r in per_run
-                  if f"BM_{pred}/cavity/{cls}" in r)
+def ratios(pred, cls, impl="cavity"):
+    return sorted(r[f"BM_{pred}/{impl}/{cls}"] / r[f"BM_{pred}/plain/{cls}"] for r in per_run
+                  if f"BM_{pred}/{impl}/{cls}" in r)
 
 goals = {"random": {"orient3d": 1.3, "insphere": 1.3, "orient4d": 1.5},
          "near_degenerate": {}, "degenerate": {"orient3d": 10, "insphere": 10, "orient4d": 10}}
@@ -57,9 +57,12 @@ lines = [
     f"{data['context'].get('load_avg', '?')} at the end): absolute figures move with the load.",
     "`cavity/plain` is the median ratio over the runs, with its range [min-max]; the goal verdict",
     "uses the median. Stage columns: fraction of the queries decided by each stage.",
+    "`static` is the cascade the engine uses (a static filter for the bounding box of the whole",
+    "query set, then the cavity predicate when it defers), with its ratio to plain, its goal",
+    "verdict and the fraction the static filter decides; `cavity` is the predicate called alone.",
     "",
-    "| predicate | inputs | cavity ns | plain ns | oracle ns | cavity/plain | goal | filter | adaptive | exact |",
-    "|---|---|---|---|---|---|---|---|---|---|",
+    "| predicate | inputs | cavity ns | plain ns | oracle ns | cavity/plain | goal | filter | adaptive | exact | static ns | static/plain | static goal | static decides |",
+    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
 ]
 for pred in ("orient3d", "insphere", "orient4d"):
     for cls in ("random", "near_degenerate", "degenerate"):
@@ -72,9 +75,17 @@ for pred in ("orient3d", "insphere", "orient4d"):
         goal = goals[cls].get(pred)
         verdict = "—" if goal is None else (f"≤{goal}×: {'met' if ratio <= goal else 'NOT met'}")
         st = counters[key("cavity")]
+        static = "| — | — | — | — |"
+        if key("static") in median:
+            ss = ratios(pred, cls, "static")
+            sr = statistics.median(ss)
+            sv = "—" if goal is None else (f"≤{goal}×: {'met' if sr <= goal else 'NOT met'}")
+            static = (f"| {median[key('static')]:.1f} | {sr:.2f}× [{ss[0]:.2f}-{ss[-1]:.2f}] | {sv} | "
+                      f"{counters[key('static')].get('static', 0):.3f} |")
         lines.append(f"| {pred} | {cls} | {c:.1f} | {p:.1f} | {o:.0f} | {ratio:.2f}× "
                      f"[{rs[0]:.2f}-{rs[-1]:.2f}] | {verdict} | "
-                     f"{st.get('filter', 0):.3f} | {st.get('adaptive', 0):.3f} | {st.get('exact', 0):.3f} |")
+                     f"{st.get('filter', 0):.3f} | {st.get('adaptive', 0):.3f} | {st.get('exact', 0):.3f} "
+                     + static)
 lines += [
     "",
     "Inputs: `random` uniform in [-1, 1) (weights too); `degenerate` exactly degenerate integer sets",

@@ -6,6 +6,7 @@
 
 #include "cavity/predicates/detail/expansion.h"
 #include "exact_integer.h"
+#include "insphere_permanent.h"
 #include "lifted_adaptive.h"
 #include "small_integers.h"
 #include "staged_pipeline.h"
@@ -25,6 +26,9 @@ std::optional<Verdict> insphere_adaptive(const std::array<Point3, 5>& p) {
         tails += std::abs(rows.xt[i]) + std::abs(rows.yt[i]) + std::abs(rows.zt[i]);
     }
     rows.differences_exact = tails == 0.0;
+    if (const std::optional<Sign> s = insphere_permanent(rows)) {
+        return Verdict{*s, Stage::kAdaptive};
+    }
     return lifted_adaptive(rows);
 }
 

@@ -9,7 +9,9 @@ namespace cavity::predicates {
 
 /// The stage of the evaluation pipeline that decided a predicate's sign.
 ///  - kFilter:   the floating-point determinant with a certified error bound (inputs in range);
-///  - kAdaptive: the determinant of the exact differences (rounded + tail) in double-double
+///  - kAdaptive: for insphere with exact differences first the plain determinant under a bound
+///               proportional to its permanent (Shewchuk's stage A); then
+///               the determinant of the exact differences (rounded + tail) in double-double
 ///               arithmetic under a certified bound; when that is too close to call, Shewchuk's
 ///               stages B and C: the exact expansion of the determinant of the rounded input
 ///               differences, then (when a difference was inexact) that plus the first-order

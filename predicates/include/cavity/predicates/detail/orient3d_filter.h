@@ -28,6 +28,22 @@ inline constexpr double kOrient3dErrorBound = 50.0 * 0x1p-53;
 inline constexpr double kOrient3dMinMax = 0x1p-300;
 inline constexpr double kOrient3dMaxMax = 0x1p330;
 
+/// The orient3d determinant in plain double arithmetic, from the rounded differences to d (the
+/// order above), shared by the semi-static filter below and the static one
+/// (orient3d_static_filter.h) so that both bounds describe the same evaluation.
+[[gnu::always_inline]] inline double orient3d_determinant(double adx,
+                                                          double ady,
+                                                          double adz,
+                                                          double bdx,
+                                                          double bdy,
+                                                          double bdz,
+                                                          double cdx,
+                                                          double cdy,
+                                                          double cdz) {
+    return adz * (bdx * cdy - bdy * cdx) + bdz * (cdx * ady - cdy * adx) +
+           cdz * (adx * bdy - ady * bdx);
+}
+
 /// +1 or -1 when the sign of det[a-d; b-d; c-d] is certified, 0 when the filter cannot decide.
 inline int orient3d_filter(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
     const double adx = a.x - d.x;
@@ -40,8 +56,7 @@ inline int orient3d_filter(const Point3& a, const Point3& b, const Point3& c, co
     const double cdy = c.y - d.y;
     const double cdz = c.z - d.z;
 
-    const double det = adz * (bdx * cdy - bdy * cdx) + bdz * (cdx * ady - cdy * adx) +
-                       cdz * (adx * bdy - ady * bdx);
+    const double det = orient3d_determinant(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz);
 
     const double maxx = std::max(std::max(std::abs(adx), std::abs(bdx)), std::abs(cdx));
     const double maxy = std::max(std::max(std::abs(ady), std::abs(bdy)), std::abs(cdy));
