@@ -7,7 +7,9 @@
 #include "cavity/core/cdt/cdt.h"
 #include "cavity/core/cdt/cdt_carve.h"
 #include "cavity/core/cdt/cdt_vertex_insertion.h"
+#include "cavity/core/cdt/exact_points_file.h"
 #include "cavity/core/cdt/read_plc.h"
+#include "cavity/core/check/orientation.h"
 #include "cavity/core/input/plc.h"
 #include "cavity/core/io/atomic_file.h"
 #include "cavity/core/io/mesh_io.h"
@@ -129,6 +131,11 @@ void run_cdt(const CdtArgs& args) {
     }
     core::write_vtu(group, args.prefix, cdt.plc.points, domain.tets, vtu);
     core::write_poly(group.add(args.prefix + ".poly"), cdt.plc);
+    const bool implicit = !cdt.plc.points.exact.empty();
+    if (implicit) {
+        // The .node has the implicit Steiner points rounded; the exact mesh is this file's.
+        group.add(args.prefix + ".exact").write(core::exact_points_text(cdt.plc.points));
+    }
     group.commit();
     if (args.quiet) {
         return;
@@ -170,6 +177,19 @@ void run_cdt(const CdtArgs& args) {
         }
     }
     std::printf("\n");
+    if (implicit) {
+        // The files' coordinates are rounded: say whether that turns any kept tetrahedron over.
+        core::PointSet rounded = cdt.plc.points;
+        rounded.exact.clear();
+        const core::OrientationCount count = core::count_orientations(rounded, domain.tets);
+        std::printf(
+            "implicit Steiner points: exact in %s.exact; rounded to doubles in %s.node, %zu of the "
+            "kept tetrahedra are inverted and %zu flat\n",
+            args.prefix.c_str(),
+            args.prefix.c_str(),
+            count.negative,
+            count.flat);
+    }
     std::printf(
         "flips 2-3 %llu, 3-2 %llu, 4-4 %llu; events queued %llu, stale %llu, held back %llu; "
         "region tetrahedra %llu, largest region %llu vertices; found by rotary searches over "
@@ -189,8 +209,9 @@ void run_cdt(const CdtArgs& args) {
     }
     std::printf(
         "valid: constrained Delaunay (checked exactly); wrote %s.node, .ele, .face, .vtu, "
-        ".poly\n",
-        args.prefix.c_str());
+        ".poly%s\n",
+        args.prefix.c_str(),
+        implicit ? ", .exact" : "");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/cdt_validate.h"
+#include "cavity/core/cdt/exact_points_file.h"
 #include "cavity/core/cdt/read_poly.h"
 #include "cavity/core/check/orientation.h"
 #include "cavity/core/check/validate.h"
@@ -30,12 +31,14 @@ struct CheckArgs {
     bool weighted = false;
     bool convex_hull = false;
     bool quiet = false;
+    std::string exact;
 };
 
 /// --poly: the mesh must be the constrained Delaunay tetrahedralization of the PLC: of the domain
 /// it bounds (as `cavity cdt` carves it), or with --convex-hull of the whole hull.
 void run_cdt_check(const CheckArgs& args) {
-    const core::Plc plc = core::read_poly(args.poly);
+    // The exact Steiner points first: the facets' planes are checked on them.
+    const core::Plc plc = core::read_poly(args.poly, args.exact);
     // The PLC carries the points; the point file must list the same ones, so that a mesh is
     // never checked against points other than those it was written with.
     const core::PointSet points = core::read_points(args.points, false);
@@ -146,6 +149,10 @@ void add_check_command(CLI::App& app) {
                     "check a constrained Delaunay tetrahedralization of this PLC (TetGen .poly) "
                     "carved to the domain it bounds, as `cavity cdt` writes it (its boundary must "
                     "be polygon triangles); the point file must list the same points as the PLC");
+    cmd->add_option("--exact",
+                    args->exact,
+                    "with --poly: the exact Steiner points `cavity cdt` wrote (PREFIX.exact); the "
+                    "mesh is checked on them instead of their rounded coordinates");
     cmd->add_flag(
         "--convex-hull",
         args->convex_hull,

@@ -19,7 +19,7 @@ namespace {
 /// Which tetrahedra the holes and (unless convex_hull) the exterior remove; the hole points are
 /// checked either way.
 std::vector<bool> removed_tets(const Cdt& cdt, bool convex_hull) {
-    const auto& pts = cdt.plc.points.points;
+    const auto& pts = cdt.plc.points;
     std::vector<bool> removed(cdt.tets.size(), false);
     TetFlood flood(cdt.tets, cdt.faces);
     const auto remove = [&](std::uint32_t t) { removed[t] = true; };

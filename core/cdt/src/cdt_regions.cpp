@@ -16,7 +16,7 @@ std::vector<std::int32_t> region_markers(const Plc& plc,
     }
     TetFlood flood(tets, faces);
     for (const PlcRegion& region : plc.regions) {
-        const std::optional<std::uint32_t> seed = flood.locate(plc.points.points, region.point);
+        const std::optional<std::uint32_t> seed = flood.locate(plc.points, region.point);
         if (!seed) {
             const auto line =
                 region.line > 0 ? std::optional<std::size_t>(region.line) : std::nullopt;

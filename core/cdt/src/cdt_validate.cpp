@@ -10,6 +10,7 @@
 #include "cavity/core/cdt/edge_protection.h"
 #include "cavity/core/check/complex_from_tets.h"
 #include "cavity/perturbation/sos.h"
+#include "cavity/predicates/generic_predicates.h"
 #include "cavity/predicates/orient3d.h"
 #include "exact_plane.h"
 #include "points_in_tets.h"
@@ -35,8 +36,17 @@ private:
     CdtValidation& out_;
 };
 
+/// The PLC's points as exactly defined (edge protection's implicit points by their definitions),
+/// so that no exact test below sees a rounded coordinate.
+struct ExactPoints {
+    const PointSet& points;
+
+    predicates::GenericPoint3 operator[](std::uint32_t i) const { return generic_point(points, i); }
+};
+
 /// An axis-aligned box in doubles: min and max are exact, so a box test never drops a simplex
-/// that meets a facet; it only spares exact tests of those that cannot.
+/// that meets a facet; it only spares exact tests of those that cannot. Implicit points are boxed
+/// by their coordinates rounded toward zero, a monotone rounding, which keeps that true.
 struct Box {
     std::array<double, 3> lo{};
     std::array<double, 3> hi{};
@@ -142,7 +152,7 @@ private:
 
 /// True when mesh triangle g lies in the facet's plane with its centroid in the facet's region.
 bool in_facet(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane, const Triangle& g) {
-    const auto& pts = plc.points.points;
+    const ExactPoints pts{plc.points};
     if (plane.side(pts[g[0]]) != Sign::kZero || plane.side(pts[g[1]]) != Sign::kZero ||
         plane.side(pts[g[2]]) != Sign::kZero) {
         return false;
@@ -198,7 +208,6 @@ std::optional<std::vector<Triangle>> covering_faces(const Plc& plc,
     }
     std::vector<Triangle> faces;
     Rational covered = 0;
-    const auto& pts = plc.points.points;
     while (!frontier.empty()) {
         const std::uint32_t v = frontier.back();
         frontier.pop_back();
@@ -208,7 +217,10 @@ std::optional<std::vector<Triangle>> covering_faces(const Plc& plc,
                 continue;
             }
             faces.push_back(g);
-            covered += triangle_area2(plane, pts[g[0]], pts[g[1]], pts[g[2]]);
+            covered += triangle_area2(plane,
+                                      exact_point(plc.points, g[0]),
+                                      exact_point(plc.points, g[1]),
+                                      exact_point(plc.points, g[2]));
             for (std::uint32_t w : g) {
                 if (around.first_visit_of_vertex(w)) {
                     frontier.push_back(w);
@@ -251,7 +263,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
             return std::move(*found);
         }
     }
-    const auto& pts = plc.points.points;
+    const ExactPoints pts{plc.points};
     const Box box = facet_box(plc, facet);
     for (std::size_t k = 0; k < mesh.tets.size(); ++k) {
         if (!box.meets(mesh.tet_boxes[k])) {
@@ -266,7 +278,10 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
             for (std::size_t j = 0; j < 4; ++j) {
                 if (s[i] < 0 && s[j] > 0) {
                     if (in_facet_region(
-                            plc, facet, *plane, plane->crossing(pts[t[i]], pts[t[j]]))) {
+                            plc,
+                            facet,
+                            *plane,
+                            plane->crossing(exact_point(pts[t[i]]), exact_point(pts[t[j]])))) {
                         report.add(tet_name(t, plc.points.index_base) + " crosses " + name);
                     }
                     i = j = 4;
@@ -283,7 +298,10 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         }
         if (in_facet(plc, facet, *plane, g)) {
             faces.push_back(g);
-            covered += triangle_area2(*plane, pts[g[0]], pts[g[1]], pts[g[2]]);
+            covered += triangle_area2(*plane,
+                                      exact_point(plc.points, g[0]),
+                                      exact_point(plc.points, g[1]),
+                                      exact_point(plc.points, g[2]));
         }
     }
     if (!carved && covered != facet_region_area2(plc, facet, *plane)) {
@@ -335,18 +353,18 @@ void check_points_outside(const Plc& plc,
                           std::span<const std::array<std::uint32_t, 4>> tets,
                           const std::vector<bool>& used,
                           Report& report) {
-    std::vector<Point3> probes;
+    std::vector<predicates::GenericPoint3> probes;
     std::vector<std::uint32_t> unused;
     for (const PlcVolumeHole& hole : plc.volume_holes) {
         probes.push_back(hole.point);
     }
     for (std::uint32_t v = 0; v < used.size(); ++v) {
         if (!used[v]) {
-            probes.push_back(plc.points.points[v]);
+            probes.push_back(generic_point(plc.points, v));
             unused.push_back(v);
         }
     }
-    const auto in = points_in_tets(plc.points.points, tets, probes);
+    const auto in = points_in_tets(plc.points, tets, probes);
     const std::size_t holes = plc.volume_holes.size();
     const auto base = static_cast<std::size_t>(plc.points.index_base);
     for (std::size_t i = 0; i < in.size(); ++i) {
@@ -385,7 +403,12 @@ void check_hull_complex(const Plc& plc,
     for (std::size_t v = 0; v < keys.size(); ++v) {
         keys[v] = static_cast<std::uint32_t>(v < static_cast<std::size_t>(base) ? 0 : v - base);
     }
-    const Geometry geometry(std::move(points), std::move(keys), {});
+    std::vector<predicates::GenericPoint3> exact;
+    if (!plc.points.exact.empty()) {
+        exact.assign(static_cast<std::size_t>(base), Point3{0, 0, 0});
+        exact.insert(exact.end(), plc.points.exact.begin(), plc.points.exact.end());
+    }
+    const Geometry geometry(std::move(points), std::move(keys), {}, std::move(exact));
     try {
         for (const std::string& p : check_complex(complex_from_tets(numbered), geometry)) {
             report.add(p);
@@ -402,7 +425,7 @@ void check_carved_complex(const Plc& plc,
                           std::span<const std::array<std::uint32_t, 4>> tets,
                           const TriangleSides& sides,
                           Report& report) {
-    const auto& pts = plc.points.points;
+    const ExactPoints pts{plc.points};
     const int base = plc.points.index_base;
     for (const auto& t : tets) {
         // Positive right-hand volume is orient3d < 0 (handedness.h).
@@ -490,7 +513,7 @@ CdtValidation validate_cdt(const Plc& plc,
         }
     }
     result.polygon_triangles = constrained.size();
-    const auto& pts = plc.points.points;
+    const ExactPoints pts{plc.points};
     for (const auto& [g, on] : sides) {
         if (constrained.contains(g)) {
             continue;

@@ -102,8 +102,8 @@ LiveCdt::Carrier LiveCdt::locate(const Point3& p) {
         },
         [&](TetId, const TetVertices& v, int f, int entered) {
             const auto tri = facet_vertices(v, f);
-            const Sign s = Geometry::orient3d(
-                geometry_.point(tri[0]), geometry_.point(tri[1]), geometry_.point(tri[2]), p);
+            // By the vertices' definitions: a rounded implicit vertex could invert a tetrahedron.
+            const Sign s = geometry_.orient3d(tri[0], tri[1], tri[2], predicates::GenericPoint3(p));
             if (s == Sign::kNeg && f != entered) {
                 return true;
             }
@@ -443,6 +443,9 @@ void LiveCdt::commit(const Cavity& cavity,
         ++counters_.on_polygon;
     }
     plc_.points.points.push_back(geometry_.point(u));
+    if (!plc_.points.exact.empty()) {
+        plc_.points.exact.emplace_back(geometry_.point(u));
+    }
     if (carrier.size == 2 && plc_edges_.count({carrier.v[0], carrier.v[1]}) != 0) {
         split_plc_edge({carrier.v[0], carrier.v[1]}, u);
         ++counters_.on_plc_edge;

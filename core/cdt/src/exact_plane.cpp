@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "cavity/predicates/generic_predicates.h"
 #include "cavity/predicates/orient3d.h"
 
 namespace cavity::core {
@@ -25,7 +26,7 @@ std::vector<Point2> project_loop(const Plc& plc, const std::vector<std::uint32_t
     std::vector<Point2> out;
     out.reserve(loop.size());
     for (std::uint32_t c : loop) {
-        out.push_back(project(exact_point(plc.points.points[c]), drop));
+        out.push_back(project(exact_point(plc.points, c), drop));
     }
     return out;
 }
@@ -141,6 +142,38 @@ ExactPoint exact_point(const Point3& p) {
     return {Rational(p.x), Rational(p.y), Rational(p.z)};
 }
 
+Point3 rounded_point(const predicates::GenericPoint3& g) {
+    if (const auto* p = std::get_if<Point3>(&g)) {
+        return *p;
+    }
+    // mpq_get_d truncates toward zero.
+    const ExactPoint e = exact_point(g);
+    return {e[0].convert_to<double>(), e[1].convert_to<double>(), e[2].convert_to<double>()};
+}
+
+ExactPoint exact_point(const predicates::GenericPoint3& g) {
+    if (const auto* p = std::get_if<Point3>(&g)) {
+        return exact_point(*p);
+    }
+    // Both kinds are a + t (b - a) for a rational t.
+    ExactPoint a;
+    ExactPoint b;
+    Rational t;
+    if (const auto* s = std::get_if<predicates::SegmentParameterPoint>(&g)) {
+        a = exact_point(s->a);
+        b = exact_point(s->b);
+        t = Rational(s->numerator) / Rational(s->denominator);
+    } else {
+        const auto& l = std::get<predicates::LinePlanePoint>(g);
+        a = exact_point(l.a);
+        b = exact_point(l.b);
+        const ExactPoint p = exact_point(l.p);
+        const ExactPoint n = cross(minus(exact_point(l.q), p), minus(exact_point(l.r), p));
+        t = dot(n, minus(p, a)) / dot(n, minus(b, a));
+    }
+    return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+}
+
 std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& facet) {
     std::vector<std::uint32_t> corners;
     for (const auto& loop : facet.loops) {
@@ -149,20 +182,19 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
     if (corners.empty()) {
         return std::nullopt;
     }
-    const ExactPoint a = exact_point(plc.points.points[corners[0]]);
+    const ExactPoint a = exact_point(plc.points, corners[0]);
     for (std::size_t i = 1; i < corners.size(); ++i) {
-        const ExactPoint b = exact_point(plc.points.points[corners[i]]);
+        const ExactPoint b = exact_point(plc.points, corners[i]);
         if (b == a) {
             continue;
         }
         for (std::size_t j = i + 1; j < corners.size(); ++j) {
-            const ExactPoint n =
-                cross(minus(b, a), minus(exact_point(plc.points.points[corners[j]]), a));
+            const ExactPoint n = cross(minus(b, a), minus(exact_point(plc.points, corners[j]), a));
             if (!is_zero(n)) {
                 ExactPlane plane;
-                plane.corners_ = {plc.points.points[corners[0]],
-                                  plc.points.points[corners[i]],
-                                  plc.points.points[corners[j]]};
+                plane.corners_ = {generic_point(plc.points, corners[0]),
+                                  generic_point(plc.points, corners[i]),
+                                  generic_point(plc.points, corners[j])};
                 plane.a_ = a;
                 plane.n_ = n;
                 for (int k = 0; k < 3; ++k) {
@@ -178,11 +210,11 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
     return std::nullopt;
 }
 
-Rational ExactPlane::offset(const Point3& p) const {
-    return dot(n_, minus(exact_point(p), a_));
+Rational ExactPlane::offset(const ExactPoint& p) const {
+    return dot(n_, minus(p, a_));
 }
 
-predicates::Sign ExactPlane::side(const Point3& p) const {
+predicates::Sign ExactPlane::side(const predicates::GenericPoint3& p) const {
     // orient3d(a, b, c, p) is positive when p is on the side opposite (b - a) x (c - a).
     const predicates::Sign s = predicates::orient3d(corners_[0], corners_[1], corners_[2], p);
     return s == predicates::Sign::kPos   ? predicates::Sign::kNeg
@@ -190,12 +222,10 @@ predicates::Sign ExactPlane::side(const Point3& p) const {
                                          : predicates::Sign::kZero;
 }
 
-ExactPoint ExactPlane::crossing(const Point3& p, const Point3& q) const {
-    const Rational dp = offset(p);
-    const Rational dq = offset(q);
+ExactPoint ExactPlane::crossing(const ExactPoint& ep, const ExactPoint& eq) const {
+    const Rational dp = offset(ep);
+    const Rational dq = offset(eq);
     const Rational t = dp / (dp - dq);
-    const ExactPoint ep = exact_point(p);
-    const ExactPoint eq = exact_point(q);
     return {ep[0] + t * (eq[0] - ep[0]), ep[1] + t * (eq[1] - ep[1]), ep[2] + t * (eq[2] - ep[2])};
 }
 
@@ -271,13 +301,11 @@ SidePieces side_pieces(const Plc& plc,
 }
 
 Rational triangle_area2(const ExactPlane& plane,
-                        const Point3& a,
-                        const Point3& b,
-                        const Point3& c) {
+                        const ExactPoint& a,
+                        const ExactPoint& b,
+                        const ExactPoint& c) {
     const int drop = plane.dropped_axis();
-    return loop_area2({project(exact_point(a), drop),
-                       project(exact_point(b), drop),
-                       project(exact_point(c), drop)});
+    return loop_area2({project(a, drop), project(b, drop), project(c, drop)});
 }
 
 }  // namespace cavity::core

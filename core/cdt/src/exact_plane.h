@@ -14,6 +14,7 @@
 #include <boost/multiprecision/gmp.hpp>
 
 #include "cavity/core/input/plc.h"
+#include "cavity/predicates/generic_point.h"
 #include "cavity/predicates/sign.h"
 
 namespace cavity::core {
@@ -22,6 +23,24 @@ using Rational = boost::multiprecision::mpq_rational;
 using ExactPoint = std::array<Rational, 3>;
 
 ExactPoint exact_point(const Point3& p);
+
+/// The exact rational coordinates of an input or implicit point (generic_point.h).
+ExactPoint exact_point(const predicates::GenericPoint3& g);
+
+/// The point rounded to doubles coordinate by coordinate, toward zero: a monotone rounding, so
+/// that boxes of rounded points meet (contain) whenever the exact points' boxes do, and serve as
+/// a broad phase. Edge protection stores implicit points' coordinates this way.
+Point3 rounded_point(const predicates::GenericPoint3& g);
+
+/// Point i of a point set as exactly defined: its implicit definition when it has one.
+inline predicates::GenericPoint3 generic_point(const PointSet& points, std::uint32_t i) {
+    return points.exact.empty() ? predicates::GenericPoint3(points.points[i]) : points.exact[i];
+}
+
+/// The exact rational coordinates of point i of a point set.
+inline ExactPoint exact_point(const PointSet& points, std::uint32_t i) {
+    return points.exact.empty() ? exact_point(points.points[i]) : exact_point(points.exact[i]);
+}
 
 /// Vector arithmetic on exact points.
 inline ExactPoint minus(const ExactPoint& p, const ExactPoint& q) {
@@ -49,18 +68,18 @@ public:
 
     /// n . (p - a): positive on the side n points to. Proportional to the signed distance, without
     /// radicals (the chapter's advice for d(v, h) in §5.8).
-    Rational offset(const Point3& p) const;
+    Rational offset(const ExactPoint& p) const;
     /// The sign of offset(p), by the exact orient3d predicate (no rational arithmetic).
-    predicates::Sign side(const Point3& p) const;
+    predicates::Sign side(const predicates::GenericPoint3& p) const;
     /// The point where segment pq meets the plane (p and q strictly on opposite sides).
-    ExactPoint crossing(const Point3& p, const Point3& q) const;
+    ExactPoint crossing(const ExactPoint& p, const ExactPoint& q) const;
 
     /// The coordinate dropped to project the plane one-to-one onto a coordinate plane: the axis of
     /// the largest normal component.
     int dropped_axis() const { return drop_; }
 
 private:
-    std::array<Point3, 3> corners_;  ///< the three corners that define the plane
+    std::array<predicates::GenericPoint3, 3> corners_;  ///< the corners that define the plane
     ExactPoint a_;
     ExactPoint n_;
     int drop_ = 2;
@@ -104,6 +123,9 @@ SidePieces side_pieces(const Plc& plc,
                        int drop);
 
 /// Twice the absolute area of triangle abc in the same projection.
-Rational triangle_area2(const ExactPlane& plane, const Point3& a, const Point3& b, const Point3& c);
+Rational triangle_area2(const ExactPlane& plane,
+                        const ExactPoint& a,
+                        const ExactPoint& b,
+                        const ExactPoint& c);
 
 }  // namespace cavity::core

@@ -106,7 +106,7 @@ std::string edge_name(const Plc& plc, const Edge& e) {
 bool coplanar(const Plc& plc, const PlcFacet& g, const ExactPlane& plane) {
     for (const auto& loop : g.loops) {
         for (std::uint32_t c : loop) {
-            if (plane.side(plc.points.points[c]) != predicates::Sign::kZero) {
+            if (plane.side(generic_point(plc.points, c)) != predicates::Sign::kZero) {
                 return false;
             }
         }
@@ -197,11 +197,11 @@ std::vector<std::string> edge_violations(const Plc& plc,
     const std::vector<Edge> all = plc_edges(plc);
     for (const Edge& e : edges) {
         const Box box = box_of(e[0], e[1]);
-        const ExactPoint a = exact_point(pts[e[0]]);
-        const ExactPoint b = exact_point(pts[e[1]]);
+        const ExactPoint a = exact_point(plc.points, e[0]);
+        const ExactPoint b = exact_point(plc.points, e[1]);
         for (std::uint32_t v = 0; v < pts.size(); ++v) {
             if (v != e[0] && v != e[1] && box.meets(box_of(v, v)) &&
-                inside_segment(a, b, exact_point(pts[v]))) {
+                inside_segment(a, b, exact_point(plc.points, v))) {
                 out.push_back(located_message(
                     plc.source,
                     std::nullopt,
@@ -213,7 +213,8 @@ std::vector<std::string> edge_violations(const Plc& plc,
                 !box.meets(box_of(f[0], f[1]))) {
                 continue;
             }
-            if (segments_cross(a, b, exact_point(pts[f[0]]), exact_point(pts[f[1]]))) {
+            if (segments_cross(
+                    a, b, exact_point(plc.points, f[0]), exact_point(plc.points, f[1]))) {
                 out.push_back(located_message(
                     plc.source, std::nullopt, "edges " + ids(e) + " and " + ids(f) + " cross"));
             }
@@ -277,8 +278,8 @@ std::vector<std::string> plc_violations(
                 std::binary_search(sides.begin(), sides.end(), e.edge)) {
                 continue;
             }
-            const Point3& p = pts[e.edge[0]];
-            const Point3& q = pts[e.edge[1]];
+            const predicates::GenericPoint3 p = generic_point(plc.points, e.edge[0]);
+            const predicates::GenericPoint3 q = generic_point(plc.points, e.edge[1]);
             const auto sp = static_cast<int>(plane->side(p));
             const auto sq = static_cast<int>(plane->side(q));
             // By the precondition the edge meets no side of the facet except at a shared corner,
@@ -301,7 +302,9 @@ std::vector<std::string> plc_violations(
                     report.add(edge_name(plc, e.edge) + ", a side of " + facet_name(plc, *g) +
                                ", lies inside it: the two coplanar facets overlap");
                 }
-            } else if (sp * sq < 0 && in_facet_region(plc, facet, *plane, plane->crossing(p, q))) {
+            } else if (sp * sq < 0 &&
+                       in_facet_region(
+                           plc, facet, *plane, plane->crossing(exact_point(p), exact_point(q)))) {
                 report.add(edge_name(plc, e.edge) +
                            (e.owners.empty()
                                 ? " (a segment)"

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cavity/predicates/orient3d.h"
+#include "cavity/predicates/generic_predicates.h"
+#include "exact_plane.h"
 
 namespace cavity::core {
 
@@ -11,9 +12,14 @@ namespace {
 
 /// p in the closed tetrahedron t of positive right-hand volume (orient3d < 0): replacing any
 /// vertex by p never makes the orientation positive.
-bool holds(const std::vector<Point3>& pts, const std::array<std::uint32_t, 4>& t, const Point3& p) {
+bool holds(const PointSet& pts,
+           const std::array<std::uint32_t, 4>& t,
+           const predicates::GenericPoint3& p) {
     for (std::size_t i = 0; i < 4; ++i) {
-        std::array<Point3, 4> q{pts[t[0]], pts[t[1]], pts[t[2]], pts[t[3]]};
+        std::array<predicates::GenericPoint3, 4> q{generic_point(pts, t[0]),
+                                                   generic_point(pts, t[1]),
+                                                   generic_point(pts, t[2]),
+                                                   generic_point(pts, t[3])};
         q[i] = p;
         if (predicates::orient3d(q[0], q[1], q[2], q[3]) == predicates::Sign::kPos) {
             return false;
@@ -89,14 +95,20 @@ private:
 }  // namespace
 
 std::vector<std::optional<std::uint32_t>> points_in_tets(
-    const std::vector<Point3>& pts,
+    const PointSet& points,
     std::span<const std::array<std::uint32_t, 4>> tets,
-    std::span<const Point3> probes) {
+    std::span<const predicates::GenericPoint3> probes) {
     std::vector<std::optional<std::uint32_t>> found(probes.size());
     if (probes.empty()) {
         return found;
     }
-    const Grid grid(probes);
+    std::vector<Point3> rounded;
+    rounded.reserve(probes.size());
+    for (const auto& p : probes) {
+        rounded.push_back(rounded_point(p));
+    }
+    const Grid grid(rounded);
+    const std::vector<Point3>& pts = points.points;
     for (std::uint32_t t = 0; t < tets.size(); ++t) {
         std::array<double, 3> lo{pts[tets[t][0]].x, pts[tets[t][0]].y, pts[tets[t][0]].z};
         std::array<double, 3> hi = lo;
@@ -108,7 +120,7 @@ std::vector<std::optional<std::uint32_t>> points_in_tets(
             }
         }
         grid.each_near(lo, hi, [&](std::uint32_t i) {
-            if (!found[i] && holds(pts, tets[t], probes[i])) {
+            if (!found[i] && holds(points, tets[t], probes[i])) {
                 found[i] = t;
             }
         });

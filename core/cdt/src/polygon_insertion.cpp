@@ -157,10 +157,10 @@ private:
             storage_.vertices(tet_of(across))[static_cast<std::size_t>(facet_of(across))];
         // S = det[p_i - q, H_i - H_q] (> 0: the lifted q is below aff sigma+), linear in each
         // height: S = sum_i (H_i - H_q) C_i with C_i the cofactors of the height column.
-        const ExactPoint eq = exact_point(geometry_.point(q));
+        const ExactPoint eq = exact_point(geometry_.generic(q));
         std::array<ExactPoint, 4> rows;
         for (std::size_t i = 0; i < 4; ++i) {
-            const ExactPoint p = exact_point(geometry_.point(sigma[i]));
+            const ExactPoint p = exact_point(geometry_.generic(sigma[i]));
             rows[i] = {p[0] - eq[0], p[1] - eq[1], p[2] - eq[2]};
         }
         std::array<Rational, 4> cofactor;
@@ -175,8 +175,7 @@ private:
             cofactor[i] = ((i + 3) % 2 == 0) ? m : Rational(-m);
         }
         const auto lift = [&](VertexId v) {
-            const Point3& p = geometry_.point(v);
-            const ExactPoint e = exact_point(p);
+            const ExactPoint e = exact_point(geometry_.generic(v));
             return Rational(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
         };
         Rational s0 = 0;

@@ -111,7 +111,7 @@ FacetGeometry::FacetGeometry(const Geometry& geometry, const Plc& plc, const Plc
 int FacetGeometry::side(VertexId v) {
     auto it = side_.find(v);
     if (it == side_.end()) {
-        const Rational d = plane_.offset(geometry_.point(v));
+        const Rational d = plane_.offset(exact_point(geometry_.generic(v)));
         it = side_.emplace(v, std::make_pair(d > 0 ? 1 : d < 0 ? -1 : 0, d)).first;
     }
     return it->second.first;
@@ -141,7 +141,8 @@ FacetGeometry::Contact FacetGeometry::contact(const TetVertices& t) {
     for (VertexId a : t) {
         for (VertexId b : t) {
             if (side(a) < 0 && side(b) > 0) {
-                const ExactPoint x = plane_.crossing(geometry_.point(a), geometry_.point(b));
+                const ExactPoint x = plane_.crossing(exact_point(geometry_.generic(a)),
+                                                     exact_point(geometry_.generic(b)));
                 return in_facet_region(plc_, facet_, plane_, x) ? Contact::kCrosses
                                                                 : Contact::kNone;
             }
@@ -171,7 +172,7 @@ bool FacetGeometry::face_in_region(std::span<const VertexId> on) {
     }
     ExactPoint centroid{0, 0, 0};
     for (VertexId v : on) {
-        const ExactPoint p = exact_point(geometry_.point(v));
+        const ExactPoint p = exact_point(geometry_.generic(v));
         for (std::size_t k = 0; k < 3; ++k) {
             centroid[k] += p[k];
         }

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "cavity/core/base/error.h"
+#include "cavity/core/cdt/exact_points_file.h"
 #include "cavity/core/io/parse_poly.h"
 #include "exact_plane.h"
 
@@ -23,15 +24,14 @@ void check_facet(const Plc& plc, const PlcFacet& facet) {
     }
     for (const auto& loop : facet.loops) {
         for (std::size_t i = 0; i < loop.size(); ++i) {
-            if (plane->side(plc.points.points[loop[i]]) != predicates::Sign::kZero) {
+            if (plane->side(generic_point(plc.points, loop[i])) != predicates::Sign::kZero) {
                 fail_at(plc,
                         facet,
                         name + ": corner " + std::to_string(loop[i] + plc.points.index_base) +
                             " is not in the plane of the facet");
             }
-            const auto& p = plc.points.points[loop[i]];
-            const auto& q = plc.points.points[loop[(i + 1) % loop.size()]];
-            if (p.x == q.x && p.y == q.y && p.z == q.z) {
+            if (exact_point(plc.points, loop[i]) ==
+                exact_point(plc.points, loop[(i + 1) % loop.size()])) {
                 fail_at(plc, facet, name + ": a loop has two equal consecutive corners");
             }
         }
@@ -61,8 +61,11 @@ void check_facet(const Plc& plc, const PlcFacet& facet) {
 
 }  // namespace
 
-Plc read_poly(const std::filesystem::path& file) {
+Plc read_poly(const std::filesystem::path& file, const std::filesystem::path& exact) {
     Plc plc = parse_poly(file);
+    if (!exact.empty()) {
+        read_exact_points(exact.string(), plc.points);
+    }
     for (const PlcFacet& facet : plc.facets) {
         check_facet(plc, facet);
     }

@@ -3,7 +3,8 @@
 #include <algorithm>
 
 #include "cavity/core/mesh/tetrahedron.h"
-#include "cavity/predicates/orient3d.h"
+#include "cavity/predicates/generic_predicates.h"
+#include "exact_plane.h"
 
 namespace cavity::core {
 
@@ -11,12 +12,13 @@ namespace {
 
 /// Which of p's four replacements of a vertex of t (positive right-hand volume: orient3d < 0)
 /// are zero, or none when one is positive and p is outside the closed tetrahedron.
-std::optional<std::array<bool, 4>> zero_faces(const std::vector<Point3>& pts,
-                                              const Tet& t,
-                                              const Point3& p) {
+std::optional<std::array<bool, 4>> zero_faces(const PointSet& pts, const Tet& t, const Point3& p) {
     std::array<bool, 4> zero{};
     for (std::size_t i = 0; i < 4; ++i) {
-        std::array<Point3, 4> q{pts[t[0]], pts[t[1]], pts[t[2]], pts[t[3]]};
+        std::array<predicates::GenericPoint3, 4> q{generic_point(pts, t[0]),
+                                                   generic_point(pts, t[1]),
+                                                   generic_point(pts, t[2]),
+                                                   generic_point(pts, t[3])};
         q[i] = p;
         const predicates::Sign s = predicates::orient3d(q[0], q[1], q[2], q[3]);
         if (s == predicates::Sign::kPos) {
@@ -91,8 +93,7 @@ std::vector<std::uint32_t> TetFlood::open_hull_tets() const {
     return seeds;
 }
 
-std::optional<std::uint32_t> TetFlood::locate(const std::vector<Point3>& pts,
-                                              const Point3& p) const {
+std::optional<std::uint32_t> TetFlood::locate(const PointSet& pts, const Point3& p) const {
     for (std::uint32_t t = 0; t < tets_.size(); ++t) {
         if (zero_faces(pts, tets_[t], p)) {
             return t;
@@ -101,7 +102,7 @@ std::optional<std::uint32_t> TetFlood::locate(const std::vector<Point3>& pts,
     return std::nullopt;
 }
 
-bool TetFlood::on_wall(const std::vector<Point3>& pts, const Point3& p) const {
+bool TetFlood::on_wall(const PointSet& pts, const Point3& p) const {
     for (const Tet& t : tets_) {
         const auto zero = zero_faces(pts, t, p);
         if (!zero) {

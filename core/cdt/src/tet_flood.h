@@ -51,12 +51,12 @@ public:
     std::vector<std::uint32_t> open_hull_tets() const;
 
     /// The first tetrahedron whose closure holds p (exact), or none when p is outside them all.
-    std::optional<std::uint32_t> locate(const std::vector<Point3>& pts, const Point3& p) const;
+    std::optional<std::uint32_t> locate(const PointSet& pts, const Point3& p) const;
 
     /// Whether p (in the closure of some tetrahedron) lies in the closure of a wall: tested on
     /// every tetrahedron holding p, so that a wall through p is found whichever side it is seen
     /// from.
-    bool on_wall(const std::vector<Point3>& pts, const Point3& p) const;
+    bool on_wall(const PointSet& pts, const Point3& p) const;
 
 private:
     using Key = std::array<std::uint32_t, 3>;

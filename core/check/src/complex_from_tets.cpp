@@ -169,7 +169,7 @@ std::vector<std::string> check_complex(const ArrayStorage& storage, const Geomet
 Geometry geometry_by_index(const PointSet& points) {
     std::vector<std::uint32_t> keys(points.size());
     std::iota(keys.begin(), keys.end(), 0u);
-    return Geometry(points.points, std::move(keys), points.weights);
+    return Geometry(points.points, std::move(keys), points.weights, points.exact);
 }
 
 }  // namespace cavity::core

@@ -1,6 +1,7 @@
 #include "cavity/core/check/orientation.h"
 
 #include "cavity/core/base/error.h"
+#include "cavity/predicates/generic_predicates.h"
 #include "cavity/predicates/orient3d.h"
 
 namespace cavity::core {
@@ -13,8 +14,17 @@ OrientationCount count_orientations(const PointSet& points, std::span<const Tet>
             continue;
         }
         // orient3d(a, b, c, d) > 0 exactly when the right-hand volume det[b−a, c−a, d−a] < 0.
-        switch (predicates::orient3d(
-            points.points[t[0]], points.points[t[1]], points.points[t[2]], points.points[t[3]])) {
+        // Implicit points (a CDT's Steiner points) by their exact definitions.
+        const predicates::Sign sign = points.exact.empty()
+                                          ? predicates::orient3d(points.points[t[0]],
+                                                                 points.points[t[1]],
+                                                                 points.points[t[2]],
+                                                                 points.points[t[3]])
+                                          : predicates::orient3d(points.exact[t[0]],
+                                                                 points.exact[t[1]],
+                                                                 points.exact[t[2]],
+                                                                 points.exact[t[3]]);
+        switch (sign) {
             case predicates::Sign::kPos:
                 ++count.negative;
                 break;

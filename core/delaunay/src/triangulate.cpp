@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <variant>
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/delaunay/insertion_driver.h"
@@ -63,7 +64,20 @@ Prepared prepare(const PointSet& input,
                  Triangulation& out,
                  unsigned threads) {
     check_input(input, sequence);
-    const auto first = first_occurrences(input.points, input.weights, threads);
+    const bool has_implicit = !input.exact.empty();
+    const auto implicit = [&](std::uint32_t i) {
+        return has_implicit && !std::holds_alternative<Point3>(input.exact[i]);
+    };
+    auto first = first_occurrences(input.points, input.weights, threads);
+    if (has_implicit) {
+        // An implicit point's rounding may equal another point's coordinates, but the point does
+        // not: neither repeats the other.
+        for (std::uint32_t i = 0; i < first.size(); ++i) {
+            if (implicit(i) || implicit(first[i])) {
+                first[i] = i;
+            }
+        }
+    }
     std::vector<std::uint32_t> order;
     order.reserve(sequence.size());
     for (std::uint32_t i : sequence) {
@@ -71,12 +85,20 @@ Prepared prepare(const PointSet& input,
             order.push_back(i);
         }
     }
+    // The bootstrap tetrahedron is chosen on coordinates, so only among explicit points: the
+    // implicit ones go last.
+    const auto explicit_end = std::stable_partition(
+        order.begin(), order.end(), [&](std::uint32_t i) { return !implicit(i); });
     for (std::uint32_t i = 0; i < first.size(); ++i) {
         if (first[i] != i) {
             out.duplicates.push_back({i, first[i]});
         }
     }
-    const auto boot = find_bootstrap(input.points, order, rule);
+    const auto boot =
+        find_bootstrap(input.points,
+                       std::span<const std::uint32_t>(
+                           order.data(), static_cast<std::size_t>(explicit_end - order.begin())),
+                       rule);
     // Move the bootstrap four to the front, keeping the relative order of the rest.
     std::vector<std::uint32_t> seq;
     seq.reserve(order.size());
@@ -90,13 +112,17 @@ Prepared prepare(const PointSet& input,
     }
     std::vector<Point3> points(seq.size());
     std::vector<double> weights(input.weighted() ? seq.size() : 0);
+    std::vector<GenericPoint3> exact(has_implicit ? seq.size() : 0);
     for (std::size_t r = 0; r < seq.size(); ++r) {
         points[r] = input.points[seq[r]];
+        if (has_implicit) {
+            exact[r] = input.exact[seq[r]];
+        }
         if (input.weighted()) {
             weights[r] = input.weights[seq[r]];
         }
     }
-    return {Geometry(std::move(points), std::move(seq), std::move(weights))};
+    return {Geometry(std::move(points), std::move(seq), std::move(weights), std::move(exact))};
 }
 
 void merge_conflict_tally(const ConflictTally& tally, Counters& counters, bool counted) {

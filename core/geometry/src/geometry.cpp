@@ -3,12 +3,23 @@
 #include <algorithm>
 #include <utility>
 
+#include "cavity/core/base/assert.h"
+#include "cavity/predicates/generic_predicates.h"
+
 namespace cavity::core {
 
 Geometry::Geometry(std::vector<Point3> points,
                    std::vector<std::uint32_t> keys,
-                   std::vector<double> weights)
-    : points_(std::move(points)), keys_(std::move(keys)), weights_(std::move(weights)) {
+                   std::vector<double> weights,
+                   std::vector<GenericPoint3> exact)
+    : points_(std::move(points))
+    , keys_(std::move(keys))
+    , weights_(std::move(weights))
+    , exact_(std::move(exact))
+    , plain_(weights_.empty() && exact_.empty()) {
+    // Implicit points are the CDT's, which is unweighted.
+    CAVITY_ASSERT(exact_.empty() || (exact_.size() == points_.size() && weights_.empty()),
+                  "implicit points need one definition per point and no weights");
     if (points_.empty()) {
         return;
     }
@@ -47,6 +58,17 @@ void count(const perturbation::SosVerdict& v, PredicateKind kind, T& tally) {
 
 }  // namespace
 
+predicates::Verdict Geometry::orient3d_generic(VertexId a,
+                                               VertexId b,
+                                               VertexId c,
+                                               VertexId d) const {
+    return predicates::orient3d_staged(exact_[a], exact_[b], exact_[c], exact_[d]);
+}
+
+Sign Geometry::orient3d(VertexId a, VertexId b, VertexId c, const GenericPoint3& d) const {
+    return predicates::orient3d(generic(a), generic(b), generic(c), d);
+}
+
 bool Geometry::tie_breaks_into(const TetVertices& t, VertexId u) const {
     const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
     return perturbation::detail::sos_tie(
@@ -56,6 +78,12 @@ bool Geometry::tie_breaks_into(const TetVertices& t, VertexId u) const {
 template <Tally T>
 bool Geometry::conflicts_solid_exactly(const TetVertices& t, VertexId u, T& tally) const {
     const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
+    if (has_implicit()) {
+        const auto v = perturbation::insphere_sos_staged(
+            exact_[t[0]], exact_[t[1]], exact_[t[2]], exact_[t[3]], exact_[u], keys);
+        count(v, PredicateKind::kInsphere, tally);
+        return v.sign == Sign::kPos;
+    }
     if (!weighted()) {
         if constexpr (!T::kCounting) {
             return perturbation::insphere_sos(
@@ -105,7 +133,10 @@ bool Geometry::conflicts_ghost_in_plane(const TetVertices& t,
                                         T& tally) const {
     const perturbation::Keys4 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[u]};
     perturbation::SosVerdict v;
-    if (!weighted()) {
+    if (has_implicit()) {
+        v = perturbation::outer_halfspace_sos_staged(
+            exact_[t[0]], exact_[t[1]], exact_[t[2]], exact_[behind], exact_[u], keys);
+    } else if (!weighted()) {
         v = perturbation::outer_halfspace_sos_staged(
             point(t[0]), point(t[1]), point(t[2]), point(behind), point(u), keys);
     } else {

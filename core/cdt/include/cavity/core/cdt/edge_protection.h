@@ -62,8 +62,15 @@ std::optional<Point3> protection_point(const Point3& a, const Point3& b);
 /// its segment and in every loop that has it) until every edge is protected. Before the first
 /// split it checks that no point lies inside an unprotected edge and no PLC edge crosses one
 /// (edge_violations), since splitting would never protect those.
-/// \throws Error naming the edge when no protection point exists, naming the points or edges when
-/// the PLC is invalid as above, or after `max_points` insertions.
+/// The split point of an edge between two explicit points is protection_point's double point when
+/// there is one; otherwise, and on every piece that has an implicit end, it is an implicit point
+/// (predicates::SegmentParameterPoint, exactly on the segment): the midpoint of the edge between
+/// the two explicit points it was first made on, at a dyadic parameter n / 2^j, whose numerator
+/// and denominator are doubles exactly. plc.points.exact then holds every point's definition and
+/// plc.points.points their rounding toward zero. The k-th point made has index and perturbation
+/// key n + k (sos.h), in a deterministic order.
+/// \throws Error naming the points or edges when the PLC is invalid as above, after `max_points`
+/// insertions, or when a piece would need a parameter finer than 2^-53.
 Protection protect_edges(Plc& plc, std::size_t max_points);
 
 }  // namespace cavity::core

@@ -20,6 +20,11 @@ struct ConflictSeed {
 /// above the lower hull), and the cell holding u may not conflict while a neighbour around a face,
 /// edge or vertex through u does; so every cell whose closure contains u is tried. No conflicting
 /// cell at all means u is redundant: `tet` stays kNoTet.
+///
+/// An implicit u (geometry.h) was located by its rounded coordinates, which may lie in a cell
+/// next to the ones its exact point conflicts with; its search crosses every face, nearest cells
+/// first, and stops at the first conflict (there is one: u is not a vertex). It never repeats a
+/// vertex: an implicit point is distinct from every other point by construction.
 template <class Storage, class Observer>
 ConflictSeed seek_conflict(BowyerWatson<Storage, Observer>& engine,
                            VertexId u,
@@ -28,8 +33,9 @@ ConflictSeed seek_conflict(BowyerWatson<Storage, Observer>& engine,
     Storage& storage = engine.storage();
     const Geometry& geometry = engine.geometry();
     const Point3& p = geometry.point(u);
+    const bool implicit = geometry.implicit(u);
     const auto repeats = [&](VertexId w) {
-        if (w == kGhostVertex) {
+        if (w == kGhostVertex || implicit || geometry.implicit(w)) {
             return false;
         }
         const Point3& q = geometry.point(w);
@@ -55,8 +61,8 @@ ConflictSeed seek_conflict(BowyerWatson<Storage, Observer>& engine,
                 continue;  // only the hull triangle of a ghost is a real face
             }
             const auto tri = facet_vertices(v, f);
-            if (engine.geometry().orient3d(tri[0], tri[1], tri[2], u, engine.tally()) !=
-                Sign::kZero) {
+            if (!implicit && engine.geometry().orient3d(
+                                 tri[0], tri[1], tri[2], u, engine.tally()) != Sign::kZero) {
                 continue;
             }
             const TetId next = tet_of(storage.adjacent(t, f));

@@ -1,19 +1,23 @@
 #pragma once
 
 #include <cstdint>
+#include <variant>
 #include <vector>
 
 #include "cavity/core/geometry/counters.h"
 #include "cavity/core/mesh/tetrahedron.h"
 #include "cavity/perturbation/outer_halfspace.h"
 #include "cavity/perturbation/sos.h"
+#include "cavity/predicates/generic_point.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/insphere_static_filter.h"
 #include "cavity/predicates/orient3d.h"
 #include "cavity/predicates/point.h"
+#include "cavity/predicates/stage.h"
 
 namespace cavity::core {
 
+using predicates::GenericPoint3;
 using predicates::Point3;
 using predicates::Sign;
 using predicates::WeightedPoint3;
@@ -22,13 +26,36 @@ using predicates::WeightedPoint3;
 /// locality), each with its perturbation key (the input index), and the geometric tests of the
 /// engine on top of the exact and perturbed predicates. Given Counters as its tally, every test
 /// records its deciding stage.
+///
+/// Implicit points. A geometry may hold Steiner points defined exactly by input doubles
+/// (generic_point.h; the CDT's edge protection makes them): `exact` is then one definition per
+/// point (an input point is its own Point3) and `points` holds their coordinates rounded to
+/// doubles. Every test by vertex id below is then decided on the definitions by the generic
+/// predicates, so no exact decision sees a rounded coordinate; point(v) stays the rounded point,
+/// for what needs no exactness (walks, boxes, output). Without implicit points `exact` is empty
+/// and the tests are the plain ones, behind one well-predicted branch.
 class Geometry {
 public:
     Geometry(std::vector<Point3> points,
              std::vector<std::uint32_t> keys,
-             std::vector<double> weights);
+             std::vector<double> weights,
+             std::vector<GenericPoint3> exact = {});
 
+    /// The point's coordinates; rounded to doubles when it is implicit.
     const Point3& point(VertexId v) const { return points_[v]; }
+
+    /// True when some point is implicit (its exact definition is not its coordinates).
+    bool has_implicit() const { return !exact_.empty(); }
+
+    /// True when point v is implicit.
+    bool implicit(VertexId v) const {
+        return has_implicit() && !std::holds_alternative<Point3>(exact_[v]);
+    }
+
+    /// The exact point v: its definition when implicit, else its coordinates.
+    GenericPoint3 generic(VertexId v) const {
+        return has_implicit() ? exact_[v] : GenericPoint3(points_[v]);
+    }
 
     std::uint32_t key(VertexId v) const { return keys_[v]; }
 
@@ -41,6 +68,9 @@ public:
     VertexId append_point(const Point3& p) {
         points_.push_back(p);
         widen_box(p);
+        if (has_implicit()) {
+            exact_.emplace_back(p);
+        }
         keys_.push_back(static_cast<std::uint32_t>(keys_.size()));
         return static_cast<VertexId>(points_.size() - 1);
     }
@@ -50,6 +80,9 @@ public:
     VertexId append(const Point3& p, std::uint32_t key, double weight) {
         points_.push_back(p);
         widen_box(p);
+        if (has_implicit()) {
+            exact_.emplace_back(p);
+        }
         keys_.push_back(key);
         if (weighted()) {
             weights_.push_back(weight);
@@ -65,13 +98,26 @@ public:
     /// Every test below comes in two forms: without a tally (the plain predicates) and with one
     /// (Tally, counters.h), which records the stage that decided it when the tally counts.
     Sign orient3d(VertexId a, VertexId b, VertexId c, VertexId d) const {
+        if (has_implicit()) [[unlikely]] {
+            return orient3d_generic(a, b, c, d).sign;
+        }
         return predicates::orient3d(point(a), point(b), point(c), point(d));
     }
 
     template <Tally T>
     Sign orient3d(VertexId a, VertexId b, VertexId c, VertexId d, T& tally) const {
+        if (has_implicit()) [[unlikely]] {
+            const auto verdict = orient3d_generic(a, b, c, d);
+            if constexpr (T::kCounting) {
+                tally.count_predicate(PredicateKind::kOrient3d, verdict.stage);
+            }
+            return verdict.sign;
+        }
         return orient3d(point(a), point(b), point(c), point(d), tally);
     }
+
+    /// orient3d of three vertices and a point given by its definition (exact on implicit ones).
+    Sign orient3d(VertexId a, VertexId b, VertexId c, const GenericPoint3& d) const;
 
     static Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
         return predicates::orient3d(a, b, c, d);
@@ -100,10 +146,11 @@ public:
     template <Tally T>
     [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t, VertexId u, T& tally) const {
         if constexpr (!T::kCounting) {
-            if (!weighted()) {
+            if (plain_) {
                 // The static filter first: most tests of a well-spread point set are decided by
                 // one comparison with the bounding box's bound. It runs only uncounted, so the
-                // counters' stages stay those of the predicates themselves.
+                // counters' stages stay those of the predicates themselves. It is sound only for
+                // the points in its box, which implicit points are not (plain_ is false then).
                 if (const int s = insphere_static_.sign(
                         point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u))) {
                     return s > 0;
@@ -153,6 +200,8 @@ private:
     /// The perturbed in-sphere test of u against solid t when the exact one is zero (out of
     /// line: rare, and kept off the inlined fast path).
     bool tie_breaks_into(const TetVertices& t, VertexId u) const;
+    /// orient3d on the exact points (out of line: only geometries with implicit points call it).
+    predicates::Verdict orient3d_generic(VertexId a, VertexId b, VertexId c, VertexId d) const;
     template <Tally T>
     bool conflicts_solid_exactly(const TetVertices& t, VertexId u, T& tally) const;
 
@@ -163,7 +212,9 @@ private:
     std::vector<Point3> points_;
     std::vector<std::uint32_t> keys_;
     std::vector<double> weights_;
-    Point3 box_lo_{};  // bounding box of points_, when there are any
+    std::vector<GenericPoint3> exact_;  // empty, or one definition per point (see the top)
+    bool plain_ = true;                 // unweighted and no implicit point: the inline fast path
+    Point3 box_lo_{};                   // bounding box of points_, when there are any
     Point3 box_hi_{};
     predicates::InsphereStaticFilter insphere_static_;  // for points in that box
 };

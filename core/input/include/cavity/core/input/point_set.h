@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "cavity/predicates/generic_point.h"
 #include "cavity/predicates/point.h"
 
 namespace cavity::core {
@@ -17,6 +18,10 @@ using predicates::WeightedPoint3;
 struct PointSet {
     std::vector<Point3> points;
     std::vector<double> weights;  ///< empty for an unweighted set, else one weight per point
+    /// Empty when every point is its coordinates; else one exact definition per point, an input
+    /// point as its Point3 and an implicit (Steiner) point as its construction from input doubles
+    /// (generic_point.h), whose entry in `points` is then only its rounding to doubles.
+    std::vector<predicates::GenericPoint3> exact;
     int index_base = 0;
     std::string source;  ///< file name or generator description, for messages
     /// A .node file's attributes, kept for the output .node: `attribute_count` per point, row by

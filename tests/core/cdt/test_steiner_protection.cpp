@@ -1,0 +1,170 @@
+// Edge protection at implicit Steiner points (issue 15, deliverable 1): a PLC edge with no double
+// point strictly inside is split at exact points of the segment, the CDT is built and validated
+// on their exact coordinates, and the new points' perturbation keys are their indices.
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <variant>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "../../../core/cdt/src/exact_plane.h"
+#include "cavity/core/cdt/cdt.h"
+#include "cavity/core/cdt/cdt_carve.h"
+#include "cavity/core/cdt/cdt_validate.h"
+#include "cavity/core/cdt/edge_protection.h"
+#include "cavity/core/cdt/exact_points_file.h"
+#include "cavity/core/cdt/read_poly.h"
+#include "cavity/core/check/complex_from_tets.h"
+#include "cavity/core/io/atomic_file.h"
+#include "cavity/core/io/write_poly.h"
+#include "cavity/core/live/delaunay_triangulation.h"
+#include "cavity/predicates/generic_predicates.h"
+#include "plc_builders.h"
+#include "temp_dir.h"
+
+namespace cavity::core {
+namespace {
+
+using predicates::GenericPoint3;
+using predicates::SegmentParameterPoint;
+
+/// Decimal corners of a tetrahedron; edge AB (points 0 and 1) has no point with double coordinates
+/// strictly inside it (asserted below), and point 4, just off AB's midpoint, encroaches it.
+const std::vector<Point3> kTetrahedron{
+    {0.1, 0.2, 0.3}, {9.7, 1.3, 0.7}, {2.3, 8.9, 1.1}, {3.1, 2.9, 8.3}};
+
+/// The tetrahedron as four facets, the encroaching point, and the corners of a box around it all,
+/// so that carving removes an exterior.
+Plc encroached_tetrahedron() {
+    std::vector<Point3> pts = kTetrahedron;
+    pts.push_back({4.95, 0.8, 0.55});  // AB's midpoint is (4.9, 0.75, 0.5)
+    for (const Point3& c : test::box_corners(12, 12, -1, 11)) {
+        pts.push_back({c.x - 1, c.y - 1, c.z});
+    }
+    return test::make_plc(pts, {{{0, 2, 1}}, {{0, 1, 3}}, {{1, 2, 3}}, {{0, 3, 2}}});
+}
+
+/// Six times the signed volume of abcd (exact).
+Rational six_volume(const ExactPoint& a,
+                    const ExactPoint& b,
+                    const ExactPoint& c,
+                    const ExactPoint& d) {
+    return dot(minus(b, a), cross(minus(c, a), minus(d, a)));
+}
+
+TEST(SteinerProtection, MainRefusedThisPlc) {
+    EXPECT_FALSE(protection_point(kTetrahedron[0], kTetrahedron[1]));
+    const auto missing = unprotected_edges(encroached_tetrahedron());
+    EXPECT_NE(std::find(missing.begin(), missing.end(), Edge{0, 1}), missing.end());
+}
+
+TEST(SteinerProtection, MeshesValidatesAndKeepsTheVolumeExactly) {
+    const Cdt cdt = build_cdt(encroached_tetrahedron(), CdtOptions{true});
+    ASSERT_FALSE(cdt.plc.points.exact.empty());
+    std::size_t implicit = 0;
+    for (std::uint32_t v : cdt.protection.inserted) {
+        const GenericPoint3& g = cdt.plc.points.exact[v];
+        if (const auto* s = std::get_if<SegmentParameterPoint>(&g)) {
+            ++implicit;
+            // Exactly on the open segment between two input points.
+            EXPECT_GT(s->numerator, 0);
+            EXPECT_LT(s->numerator, s->denominator);
+        }
+    }
+    EXPECT_GT(implicit, 0u);
+    EXPECT_TRUE(validate_cdt(cdt.plc, cdt.tets).ok());
+
+    const CarvedCdt domain = carve_cdt(cdt, false);
+    EXPECT_TRUE(validate_cdt(cdt.plc, domain.tets, CdtDomain::kCarved).ok());
+    // The carved tetrahedra fill ABCD exactly: their volumes, on the Steiner points' exact
+    // coordinates, sum to its volume (right-hand positive: minus orient3d's determinant).
+    Rational sum = 0;
+    for (const Tet& t : domain.tets) {
+        const Rational v = six_volume(exact_point(cdt.plc.points, t[0]),
+                                      exact_point(cdt.plc.points, t[1]),
+                                      exact_point(cdt.plc.points, t[2]),
+                                      exact_point(cdt.plc.points, t[3]));
+        EXPECT_GT(v, 0);
+        sum += v;
+    }
+    const auto& k = kTetrahedron;
+    EXPECT_EQ(sum,
+              abs(six_volume(
+                  exact_point(k[0]), exact_point(k[1]), exact_point(k[2]), exact_point(k[3]))));
+}
+
+/// Keys: the k-th point protect_edges makes has index, hence perturbation key, n + k (sos.h), and
+/// the whole construction is deterministic.
+TEST(SteinerProtection, NewPointsAreKeyedByCreationOrder) {
+    const Plc input = encroached_tetrahedron();
+    const auto n = static_cast<std::uint32_t>(input.points.size());
+    const Cdt first = build_cdt(input, CdtOptions{true});
+    const Cdt second = build_cdt(input, CdtOptions{true});
+    std::vector<std::uint32_t> expected(first.protection.inserted.size());
+    std::iota(expected.begin(), expected.end(), n);
+    EXPECT_EQ(first.protection.inserted, expected);
+    const Geometry geometry = geometry_by_index(first.plc.points);
+    for (std::uint32_t v = 0; v < geometry.size(); ++v) {
+        EXPECT_EQ(geometry.key(v), v);
+        EXPECT_EQ(geometry.implicit(v), !std::holds_alternative<Point3>(first.plc.points.exact[v]));
+    }
+    EXPECT_EQ(first.tets, second.tets);
+    ASSERT_EQ(second.plc.points.exact.size(), first.plc.points.exact.size());
+    for (std::size_t v = 0; v < first.plc.points.exact.size(); ++v) {
+        EXPECT_EQ(exact_point(first.plc.points.exact[v]), exact_point(second.plc.points.exact[v]));
+    }
+}
+
+/// Deliverable 5: the side file keeps the Steiner points exact. Written with the .poly (rounded
+/// coordinates) and read back, the PLC validates the carved mesh exactly; without it the rounded
+/// facet corners are refused as off their planes.
+TEST(SteinerProtection, ExactSideFileValidatesTheExactMesh) {
+    const Cdt cdt = build_cdt(encroached_tetrahedron(), CdtOptions{true});
+    const CarvedCdt domain = carve_cdt(cdt, false);
+    const test::TempDir dir;
+    AtomicFileGroup group;
+    write_poly(group.add(dir.path() / "out.poly"), cdt.plc);
+    group.add(dir.path() / "out.exact").write(exact_points_text(cdt.plc.points));
+    group.commit();
+    const Plc read = read_poly(dir.path() / "out.poly", dir.path() / "out.exact");
+    ASSERT_EQ(read.points.exact.size(), cdt.plc.points.exact.size());
+    for (std::uint32_t v = 0; v < read.points.size(); ++v) {
+        EXPECT_EQ(exact_point(read.points, v), exact_point(cdt.plc.points, v));
+    }
+    EXPECT_TRUE(validate_cdt(read, domain.tets, CdtDomain::kCarved).ok());
+}
+
+/// An implicit point whose rounding is an input point is still its own vertex: the midpoint of
+/// (1,1,1) and its neighbour one ulp up truncates to (1,1,1).
+TEST(SteinerProtection, RoundingOntoAnInputPointIsNoDuplicate) {
+    const double up = 1 + 0x1p-52;
+    PointSet points;
+    points.points = {{1, 1, 1}, {up, up, up}, {0, 0, 0}, {3, 0, 0}, {0, 3, 0}, {0, 0, 3}};
+    points.exact.assign(points.points.begin(), points.points.end());
+    const auto m = predicates::segment_parameter_point(points.points[0], points.points[1], 1, 2);
+    ASSERT_TRUE(m);
+    points.exact.emplace_back(*m);
+    points.points.push_back(rounded_point(*m));
+    ASSERT_EQ(points.points.back().x, 1.0);
+    std::vector<std::uint32_t> sequence(points.size());
+    std::iota(sequence.begin(), sequence.end(), 0u);
+    DelaunayTriangulation dt(points, sequence, TriangulateOptions{});
+    EXPECT_TRUE(dt.duplicates().empty());
+    const auto tets = dt.tets();
+    bool has_m = false;
+    for (const auto& t : tets) {
+        has_m = has_m || std::find(t.begin(), t.end(), 6u) != t.end();
+        // Positive right-hand volume on the exact points: orient3d < 0.
+        EXPECT_EQ(
+            predicates::orient3d(
+                points.exact[t[0]], points.exact[t[1]], points.exact[t[2]], points.exact[t[3]]),
+            predicates::Sign::kNeg);
+    }
+    EXPECT_TRUE(has_m);
+}
+
+}  // namespace
+}  // namespace cavity::core
