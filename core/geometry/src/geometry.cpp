@@ -30,6 +30,7 @@ Geometry::Geometry(std::vector<Point3> points,
         box_hi_ = {std::max(box_hi_.x, p.x), std::max(box_hi_.y, p.y), std::max(box_hi_.z, p.z)};
     }
     insphere_static_ = predicates::InsphereStaticFilter(box_lo_, box_hi_);
+    orient3d_static_ = predicates::Orient3dStaticFilter(box_lo_, box_hi_);
 }
 
 void Geometry::widen_box(const Point3& p) {
@@ -40,6 +41,7 @@ void Geometry::widen_box(const Point3& p) {
     box_lo_ = {std::min(box_lo_.x, p.x), std::min(box_lo_.y, p.y), std::min(box_lo_.z, p.z)};
     box_hi_ = {std::max(box_hi_.x, p.x), std::max(box_hi_.y, p.y), std::max(box_hi_.z, p.z)};
     insphere_static_ = predicates::InsphereStaticFilter(box_lo_, box_hi_);
+    orient3d_static_ = predicates::Orient3dStaticFilter(box_lo_, box_hi_);
 }
 
 namespace {

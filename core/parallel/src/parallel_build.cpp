@@ -195,6 +195,13 @@ std::array<VertexId, 4> construct(const Geometry& geometry,
         throw Error("the number of threads must be between 1 and 127, not " +
                     std::to_string(threads));
     }
+    if (geometry.has_implicit()) {
+        // The workers' seek for a conflicting cell trusts rounded coordinates near the located
+        // cell; an implicit point needs the sequential engine's search across every face.
+        throw Error(
+            "the parallel construction takes explicit points only (a CDT's implicit "
+            "Steiner points are inserted by the sequential engine)");
+    }
     const std::size_t n = geometry.size();
     mesh.grow(kSlotsPerPoint * n + kSlotsPerThread * (threads + 1));
     const std::array<VertexId, 4> interior = bootstrap(geometry, mesh);

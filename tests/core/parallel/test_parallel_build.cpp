@@ -20,6 +20,7 @@
 #include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
 #include "cavity/core/parallel/parallel_build.h"
+#include "cavity/predicates/generic_point.h"
 #include "corpus.h"
 
 namespace cavity::core {
@@ -242,6 +243,15 @@ TEST(ParallelBuild, RefusesWhatItDoesNotDo) {
     prefix.prefix = 50;
     EXPECT_THROW(triangulate(ps, brio(ps), prefix), Error);
     EXPECT_THROW(triangulate(ps, brio(ps), with_threads(128)), Error);
+    // An implicit Steiner point (a CDT's): the workers would seek its cavity from its rounding.
+    PointSet implicit = ps;
+    implicit.exact.assign(ps.points.begin(), ps.points.end());
+    const Point3 a = ps.points[1];
+    const Point3 b = ps.points[2];
+    implicit.exact[0] = predicates::SegmentParameterPoint{a, b, 1, 3};
+    implicit.points[0] = {a.x + (b.x - a.x) / 3, a.y + (b.y - a.y) / 3, a.z + (b.z - a.z) / 3};
+    EXPECT_THROW(triangulate(implicit, brio(implicit), with_threads(2)), Error);
+    EXPECT_NO_THROW(triangulate(implicit, brio(implicit), TriangulateOptions{}));
 }
 
 }  // namespace

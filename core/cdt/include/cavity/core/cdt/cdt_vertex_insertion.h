@@ -16,7 +16,7 @@
 /// Vertex insertion into a constrained Delaunay tetrahedralization (Cheng, Dey & Shewchuk §5.7):
 /// Bowyer–Watson adapted to CDTs as §3.9 does in the plane. The cavity is the set of tetrahedra
 /// in conflict with the new vertex v (perturbed circumball, or outer halfspace for a ghost) that a
-/// depth-first search reaches without crossing a polygon, except a polygon v lies on. Even when
+/// breadth-first search reaches without crossing a polygon, except a polygon v lies on. Even when
 /// the PLC has a CDT, the PLC with v added may have none, and the chapter's two symptoms are then
 /// checked before anything changes (the second first: a polygon through the cavity breaks
 /// star-shapedness too, and naming it says more, so a point failing both is kThroughCavity):

@@ -28,12 +28,16 @@ public:
         Storage& storage = engine.storage();
         const Geometry& g = engine.geometry();
         auto& tally = engine.tally();
+        // The static filter needs every point in the box: the vertices are, p and the source s
+        // (rounded sums of quarters) are checked.
+        bool in_box = g.in_box(p);
         const auto orient =
             [&](const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
                 if constexpr (Observer::kCounting) {
                     ++tally.walk_orient_calls;
                 }
-                return Geometry::orient3d(a, b, c, d, tally);
+                return in_box ? g.orient3d_in_box(a, b, c, d, tally)
+                              : Geometry::orient3d(a, b, c, d, tally);
             };
         const TetVertices& first = storage.vertices(start);
         if (is_ghost(first)) {
@@ -46,6 +50,7 @@ public:
                            g.point(first[3]).y / 4,
                        g.point(first[0]).z / 4 + g.point(first[1]).z / 4 + g.point(first[2]).z / 4 +
                            g.point(first[3]).z / 4};
+        in_box = in_box && g.in_box(s);
         for (int f = 0; f < 4; ++f) {
             const auto tri = facet_vertices(first, f);
             if (orient(g.point(tri[0]), g.point(tri[1]), g.point(tri[2]), s) != Sign::kPos) {

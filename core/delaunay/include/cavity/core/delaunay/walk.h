@@ -24,6 +24,8 @@ public:
     TetId locate(BowyerWatson<Storage, Observer>& engine, const Point3& p, TetId start) {
         const Geometry& geometry = engine.geometry();
         auto& tally = engine.tally();
+        // Inserted points are in the box; a query of the live triangulation may not be.
+        const bool in_box = geometry.in_box(p);
         return stochastic_walk(
             engine.storage(),
             start,
@@ -42,11 +44,11 @@ public:
                     ++tally.walk_orient_calls;
                 }
                 const auto tri = facet_vertices(v, f);
-                return Geometry::orient3d(geometry.point(tri[0]),
-                                          geometry.point(tri[1]),
-                                          geometry.point(tri[2]),
-                                          p,
-                                          tally) == Sign::kNeg;
+                const Point3& a = geometry.point(tri[0]);
+                const Point3& b = geometry.point(tri[1]);
+                const Point3& c = geometry.point(tri[2]);
+                return (in_box ? geometry.orient3d_in_box(a, b, c, p, tally)
+                               : Geometry::orient3d(a, b, c, p, tally)) == Sign::kNeg;
             });
     }
 

@@ -12,6 +12,7 @@
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/insphere_static_filter.h"
 #include "cavity/predicates/orient3d.h"
+#include "cavity/predicates/orient3d_static_filter.h"
 #include "cavity/predicates/point.h"
 #include "cavity/predicates/stage.h"
 
@@ -135,6 +136,26 @@ public:
         }
     }
 
+    /// True when p lies in the bounding box of the points (closed), where the static filters hold.
+    bool in_box(const Point3& p) const {
+        return !points_.empty() && box_lo_.x <= p.x && p.x <= box_hi_.x && box_lo_.y <= p.y &&
+               p.y <= box_hi_.y && box_lo_.z <= p.z && p.z <= box_hi_.z;
+    }
+
+    /// orient3d of four points the caller knows to lie in the bounding box (in_box), as the
+    /// walks' tests do: the static filter first when uncounted (one comparison decides most
+    /// tests), so the counters' stages stay those of the predicates, as in conflicts_solid.
+    template <Tally T>
+    [[gnu::always_inline]] Sign orient3d_in_box(
+        const Point3& a, const Point3& b, const Point3& c, const Point3& d, T& tally) const {
+        if constexpr (!T::kCounting) {
+            if (const int s = orient3d_static_.sign(a, b, c, d)) {
+                return s > 0 ? Sign::kPos : Sign::kNeg;
+            }
+        }
+        return orient3d(a, b, c, d, tally);
+    }
+
     /// True when u is in the perturbed open circumball (weighted: below the perturbed witness
     /// plane) of the solid tetrahedron t. The common case (unweighted, uncounted, not a tie) is
     /// inline; the perturbation keys are read only on an exact tie.
@@ -217,6 +238,7 @@ private:
     Point3 box_lo_{};                   // bounding box of points_, when there are any
     Point3 box_hi_{};
     predicates::InsphereStaticFilter insphere_static_;  // for points in that box
+    predicates::Orient3dStaticFilter orient3d_static_;  // likewise
 };
 
 }  // namespace cavity::core
