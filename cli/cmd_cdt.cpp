@@ -242,8 +242,10 @@ void add_cdt_command(CLI::App& app) {
         "--protect",
         args->protect,
         "split PLC edges that are not Delaunay until it is edge-protected, at points lying "
-        "exactly on them (double coordinates, near the middle; an edge with no such point "
-        "is refused by name)");
+        "exactly on them: a point with double coordinates near the middle when one exists, "
+        "else an implicit point at an exact dyadic parameter of the input edge (kept exactly: "
+        "PREFIX.exact; .node has it rounded, and the summary counts tetrahedra the rounding "
+        "inverts)");
     cmd->add_flag("--convex-hull",
                   args->convex_hull,
                   "keep the whole convex hull of the points: neither the exterior nor the volume "
