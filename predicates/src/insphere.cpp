@@ -15,17 +15,7 @@ namespace cavity::predicates::detail {
 namespace {
 
 std::optional<Verdict> insphere_adaptive(const std::array<Point3, 5>& p) {
-    LiftedRows rows{};
-    double tails = 0.0;
-    for (int i = 0; i < 4; ++i) {
-        two_diff(p[i].x, p[4].x, rows.x[i], rows.xt[i]);
-        two_diff(p[i].y, p[4].y, rows.y[i], rows.yt[i]);
-        two_diff(p[i].z, p[4].z, rows.z[i], rows.zt[i]);
-        // The tails are multiples of 2^-192 below 2^130 here, so this sum of magnitudes is 0
-        // exactly when every tail is.
-        tails += std::abs(rows.xt[i]) + std::abs(rows.yt[i]) + std::abs(rows.zt[i]);
-    }
-    rows.differences_exact = tails == 0.0;
+    const LiftedRows rows = insphere_rows(p);
     if (const std::optional<Sign> s = insphere_permanent(rows)) {
         return Verdict{*s, Stage::kAdaptive};
     }

@@ -1,7 +1,11 @@
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <optional>
 
+#include "cavity/predicates/detail/expansion.h"
+#include "cavity/predicates/point.h"
 #include "cavity/predicates/stage.h"
 #include "staged_pipeline.h"
 
@@ -34,6 +38,22 @@ struct LiftedRows {
     double wt[4];
     bool differences_exact;
 };
+
+/// insphere's rows (no weights): the differences of a..d to e with their tails. The tails are
+/// multiples of 2^-192 below 2^130 in kLiftedAdaptiveWindow, so the sum of their magnitudes is 0
+/// exactly when every tail is.
+inline LiftedRows insphere_rows(const std::array<Point3, 5>& p) {
+    LiftedRows rows{};
+    double tails = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        two_diff(p[i].x, p[4].x, rows.x[i], rows.xt[i]);
+        two_diff(p[i].y, p[4].y, rows.y[i], rows.yt[i]);
+        two_diff(p[i].z, p[4].z, rows.z[i], rows.zt[i]);
+        tails += std::abs(rows.xt[i]) + std::abs(rows.yt[i]) + std::abs(rows.zt[i]);
+    }
+    rows.differences_exact = tails == 0.0;
+    return rows;
+}
 
 /// The double-double stage that runs before stage B: the sign of the determinant evaluated in
 /// double-double arithmetic over the exact differences (rounded + tail), when certified by its

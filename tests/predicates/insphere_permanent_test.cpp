@@ -26,16 +26,7 @@ using Query = std::array<Point3, 5>;
 
 /// The rows insphere's adaptive stage builds (insphere.cpp).
 LiftedRows rows_of(const Query& q) {
-    LiftedRows rows{};
-    double tails = 0.0;
-    for (int i = 0; i < 4; ++i) {
-        two_diff(q[i].x, q[4].x, rows.x[i], rows.xt[i]);
-        two_diff(q[i].y, q[4].y, rows.y[i], rows.yt[i]);
-        two_diff(q[i].z, q[4].z, rows.z[i], rows.zt[i]);
-        tails += std::abs(rows.xt[i]) + std::abs(rows.yt[i]) + std::abs(rows.zt[i]);
-    }
-    rows.differences_exact = tails == 0.0;
-    return rows;
+    return insphere_rows(q);
 }
 
 struct Tally {
