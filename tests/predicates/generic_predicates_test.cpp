@@ -17,7 +17,6 @@
 #include <cstdlib>
 #include <limits>
 #include <optional>
-#include <random>
 #include <string>
 #include <variant>
 
@@ -26,6 +25,7 @@
 
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"
+#include "random_source.h"
 
 namespace cavity::predicates {
 namespace {
@@ -148,56 +148,28 @@ struct Tally {
     }
 };
 
-class Source {
-public:
-    explicit Source(std::uint64_t seed) : rng_(seed) {}
+using Source = testing::RandomSource;
 
-    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
-
-    double unit() { return std::uniform_real_distribution<double>(-1.0, 1.0)(rng_); }
-
-    /// Moves v by 1-4 ulps up or down.
-    double nudged(double v) {
-        const double toward = integer(0, 1) == 0 ? std::numeric_limits<double>::infinity()
-                                                 : -std::numeric_limits<double>::infinity();
-        for (int step = integer(1, 4); step > 0; --step) {
-            v = std::nextafter(v, toward);
-        }
-        return v;
+/// A random generic point of the given kind (0 explicit, 1 on a segment, 2 line-plane).
+GenericPoint3 random_generic(Source& s, int kind, int lo, int hi) {
+    if (kind == 1) {
+        double den = s.unit();
+        den = den == 0.0 ? 1.0 : den;
+        return SegmentParameterPoint{s.point(lo, hi), s.point(lo, hi), s.unit(), den};
     }
-
-    /// A random point: every coordinate 2^k times a uniform [-1, 1), k in [lo, hi]; with
-    /// lo = -1074 and hi = 1023 it spans every finite double's magnitude.
-    Point3 point(int lo, int hi) {
-        return {std::ldexp(unit(), integer(lo, hi)),
-                std::ldexp(unit(), integer(lo, hi)),
-                std::ldexp(unit(), integer(lo, hi))};
-    }
-
-    /// A random generic point of the given kind (0 explicit, 1 on a segment, 2 line-plane).
-    GenericPoint3 generic(int kind, int lo, int hi) {
-        if (kind == 1) {
-            double den = unit();
-            den = den == 0.0 ? 1.0 : den;
-            return SegmentParameterPoint{point(lo, hi), point(lo, hi), unit(), den};
-        }
-        if (kind == 2) {
-            for (;;) {
-                if (auto l = line_plane_point(point(lo, hi),
-                                              point(lo, hi),
-                                              point(lo, hi),
-                                              point(lo, hi),
-                                              point(lo, hi))) {
-                    return *l;
-                }
+    if (kind == 2) {
+        for (;;) {
+            if (auto l = line_plane_point(s.point(lo, hi),
+                                          s.point(lo, hi),
+                                          s.point(lo, hi),
+                                          s.point(lo, hi),
+                                          s.point(lo, hi))) {
+                return *l;
             }
         }
-        return point(lo, hi);
     }
-
-private:
-    std::mt19937_64 rng_;
-};
+    return s.point(lo, hi);
+}
 
 struct Range {
     int lo;
@@ -219,7 +191,7 @@ TEST(GenericPredicates, AgreeWithTheOracleOnRandomMixes) {
         for (std::size_t n = 0; n < count; ++n) {
             std::array<GenericPoint3, 5> g;
             for (auto& p : g) {
-                p = s.generic(s.integer(0, 2), r.lo, r.hi);
+                p = random_generic(s, s.integer(0, 2), r.lo, r.hi);
             }
             orient.check(orient3d_staged(g[0], g[1], g[2], g[3]), oracle_orient3d(g), g, 4);
             sphere.check(insphere_staged(g[0], g[1], g[2], g[3], g[4]), oracle_insphere(g), g, 5);

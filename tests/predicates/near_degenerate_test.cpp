@@ -14,8 +14,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <limits>
-#include <random>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -24,6 +22,7 @@
 #include "cavity/predicates/oracle.h"
 #include "cavity/predicates/orient3d.h"
 #include "cavity/predicates/orient4d.h"
+#include "random_source.h"
 
 namespace cavity::predicates {
 namespace {
@@ -51,38 +50,7 @@ const char* family_name(Family f) {
     return "?";
 }
 
-class Source {
-public:
-    explicit Source(std::uint64_t seed) : rng_(seed) {}
-
-    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
-
-    double unit() { return std::uniform_real_distribution<double>(-1.0, 1.0)(rng_); }
-
-    /// Moves v by 1-4 ulps up or down.
-    double nudged(double v) {
-        const double toward = integer(0, 1) == 0 ? std::numeric_limits<double>::infinity()
-                                                 : -std::numeric_limits<double>::infinity();
-        for (int step = integer(1, 4); step > 0; --step) {
-            v = std::nextafter(v, toward);
-        }
-        return v;
-    }
-
-    /// A random double of magnitude 2^-20..2^40, so that differences of two are mostly inexact.
-    double spread() { return std::ldexp(unit(), integer(-20, 40)); }
-
-    /// A unit vector, rounded.
-    std::array<double, 3> direction() {
-        std::normal_distribution<double> normal;
-        const double x = normal(rng_), y = normal(rng_), z = normal(rng_);
-        const double n = std::sqrt(x * x + y * y + z * z);
-        return {x / n, y / n, z / n};
-    }
-
-private:
-    std::mt19937_64 rng_;
-};
+using Source = testing::RandomSource;
 
 /// A point of an integer degenerate configuration (coplanar, cospherical or cohyperplanar after
 /// lifting) mapped to doubles by the family: scaled by 0.1, moved by ulps, or offset.
