@@ -1,6 +1,7 @@
 #include "exact_plane.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include "cavity/predicates/generic_predicates.h"
@@ -174,12 +175,83 @@ ExactPoint exact_point(const predicates::GenericPoint3& g) {
     return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
 }
 
+namespace {
+
+/// The sign of component k of (b - a) x (c - a), exactly: the orientation of a, b, c projected
+/// onto the coordinate plane normal to axis k, as orient3d of the projections (in the plane
+/// z = 0) and a point above them, which is exact for every finite double.
+predicates::Sign normal_sign(const Point3& a, const Point3& b, const Point3& c, int k) {
+    const auto flat = [k](const Point3& p) {
+        const std::array<double, 3> x{p.x, p.y, p.z};
+        return Point3{x[static_cast<std::size_t>((k + 1) % 3)],
+                      x[static_cast<std::size_t>((k + 2) % 3)],
+                      0.0};
+    };
+    // det[a-d; b-d; c-d] with d = (0, 0, 1) is minus the 2D orientation of the projections.
+    const predicates::Sign s = predicates::orient3d(flat(a), flat(b), flat(c), {0.0, 0.0, 1.0});
+    return s == predicates::Sign::kPos   ? predicates::Sign::kNeg
+           : s == predicates::Sign::kNeg ? predicates::Sign::kPos
+                                         : predicates::Sign::kZero;
+}
+
+/// For three input points: the axis to drop (see dropped_axis), or nullopt when they are
+/// collinear. Decided by exact signs, without rationals; the floating-point normal only orders the
+/// candidate axes (any axis with a non-zero component projects the plane one-to-one).
+std::optional<int> drop_axis(const Point3& a, const Point3& b, const Point3& c) {
+    const double u[3]{b.x - a.x, b.y - a.y, b.z - a.z};
+    const double v[3]{c.x - a.x, c.y - a.y, c.z - a.z};
+    std::array<double, 3> size{std::abs(u[1] * v[2] - u[2] * v[1]),
+                               std::abs(u[2] * v[0] - u[0] * v[2]),
+                               std::abs(u[0] * v[1] - u[1] * v[0])};
+    for (double& x : size) {
+        x = std::isnan(x) ? -1.0 : x;  // an estimate that overflowed into inf - inf goes last
+    }
+    std::array<int, 3> axes{0, 1, 2};
+    // Largest estimate first; ties keep the lower axis.
+    std::stable_sort(axes.begin(), axes.end(), [&](int i, int j) {
+        return size[static_cast<std::size_t>(i)] > size[static_cast<std::size_t>(j)];
+    });
+    for (int k : axes) {
+        if (normal_sign(a, b, c, k) != predicates::Sign::kZero) {
+            return k;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& facet) {
     std::vector<std::uint32_t> corners;
     for (const auto& loop : facet.loops) {
         corners.insert(corners.end(), loop.begin(), loop.end());
     }
     if (corners.empty()) {
+        return std::nullopt;
+    }
+    const auto make = [&](std::size_t i, std::size_t j, int drop) {
+        ExactPlane plane;
+        plane.corners_ = {generic_point(plc.points, corners[0]),
+                          generic_point(plc.points, corners[i]),
+                          generic_point(plc.points, corners[j])};
+        plane.drop_ = drop;
+        return plane;
+    };
+    if (plc.points.exact.empty()) {
+        // Input points only: exact signs decide collinearity and the axis.
+        const auto& pts = plc.points.points;
+        const Point3& a = pts[corners[0]];
+        for (std::size_t i = 1; i < corners.size(); ++i) {
+            const Point3& b = pts[corners[i]];
+            if (b.x == a.x && b.y == a.y && b.z == a.z) {
+                continue;
+            }
+            for (std::size_t j = i + 1; j < corners.size(); ++j) {
+                if (const auto drop = drop_axis(a, b, pts[corners[j]])) {
+                    return make(i, j, *drop);
+                }
+            }
+        }
         return std::nullopt;
     }
     const ExactPoint a = exact_point(plc.points, corners[0]);
@@ -191,18 +263,15 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
         for (std::size_t j = i + 1; j < corners.size(); ++j) {
             const ExactPoint n = cross(minus(b, a), minus(exact_point(plc.points, corners[j]), a));
             if (!is_zero(n)) {
-                ExactPlane plane;
-                plane.corners_ = {generic_point(plc.points, corners[0]),
-                                  generic_point(plc.points, corners[i]),
-                                  generic_point(plc.points, corners[j])};
-                plane.a_ = a;
-                plane.n_ = n;
+                int drop = 2;
                 for (int k = 0; k < 3; ++k) {
                     if (abs(n[static_cast<std::size_t>(k)]) >
-                        abs(n[static_cast<std::size_t>(plane.drop_)])) {
-                        plane.drop_ = k;
+                        abs(n[static_cast<std::size_t>(drop)])) {
+                        drop = k;
                     }
                 }
+                ExactPlane plane = make(i, j, drop);
+                plane.rational_.emplace(a, n);
                 return plane;
             }
         }
@@ -210,8 +279,18 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
     return std::nullopt;
 }
 
+const std::pair<ExactPoint, ExactPoint>& ExactPlane::rational() const {
+    if (!rational_) {
+        const ExactPoint a = exact_point(corners_[0]);
+        rational_.emplace(
+            a, cross(minus(exact_point(corners_[1]), a), minus(exact_point(corners_[2]), a)));
+    }
+    return *rational_;
+}
+
 Rational ExactPlane::offset(const ExactPoint& p) const {
-    return dot(n_, minus(p, a_));
+    const auto& [a, n] = rational();
+    return dot(n, minus(p, a));
 }
 
 predicates::Sign ExactPlane::side(const predicates::GenericPoint3& p) const {

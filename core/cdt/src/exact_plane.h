@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <boost/multiprecision/gmp.hpp>
@@ -74,14 +75,18 @@ public:
     /// The point where segment pq meets the plane (p and q strictly on opposite sides).
     ExactPoint crossing(const ExactPoint& p, const ExactPoint& q) const;
 
-    /// The coordinate dropped to project the plane one-to-one onto a coordinate plane: the axis of
-    /// the largest normal component.
+    /// The coordinate dropped to project the plane one-to-one onto a coordinate plane: an axis
+    /// whose normal component is not zero (exactly), the largest by a floating-point estimate.
     int dropped_axis() const { return drop_; }
 
 private:
+    /// The first corner and the normal in rationals, made on the first question that needs them:
+    /// most facets are only asked for sides (orient3d) and their projection axis, and the rational
+    /// conversions cost more than the rest of the PLC check.
+    const std::pair<ExactPoint, ExactPoint>& rational() const;
+
     std::array<predicates::GenericPoint3, 3> corners_;  ///< the corners that define the plane
-    ExactPoint a_;
-    ExactPoint n_;
+    mutable std::optional<std::pair<ExactPoint, ExactPoint>> rational_;  ///< a and n, or not yet
     int drop_ = 2;
 };
 

@@ -270,6 +270,18 @@ std::vector<std::string> plc_violations(
             }
         }
         const std::vector<Edge> sides = facet_sides(facet);
+        std::vector<std::uint32_t> corners;
+        for (const auto& loop : facet.loops) {
+            corners.insert(corners.end(), loop.begin(), loop.end());
+        }
+        std::sort(corners.begin(), corners.end());
+        // A corner lies in the plane: no predicate needed (on a surface mesh most nearby edges
+        // end at one, and an exact zero is orient3d's most expensive answer).
+        const auto side = [&](std::uint32_t v) {
+            return std::binary_search(corners.begin(), corners.end(), v)
+                       ? 0
+                       : static_cast<int>(plane->side(generic_point(plc.points, v)));
+        };
         std::vector<std::size_t> near = grid.near(box, f);
         std::sort(near.begin(), near.end());
         for (std::size_t i : near) {
@@ -278,10 +290,10 @@ std::vector<std::string> plc_violations(
                 std::binary_search(sides.begin(), sides.end(), e.edge)) {
                 continue;
             }
+            const int sp = side(e.edge[0]);
+            const int sq = side(e.edge[1]);
             const predicates::GenericPoint3 p = generic_point(plc.points, e.edge[0]);
             const predicates::GenericPoint3 q = generic_point(plc.points, e.edge[1]);
-            const auto sp = static_cast<int>(plane->side(p));
-            const auto sq = static_cast<int>(plane->side(q));
             // By the precondition the edge meets no side of the facet except at a shared corner,
             // so the point tested below is on no loop side and decides for the whole edge.
             if (sp == 0 && sq == 0) {

@@ -43,7 +43,7 @@ void VtkBinaryArray::compress_block() {
                                  &size,
                                  reinterpret_cast<const Bytef*>(block_.data()),
                                  static_cast<uLong>(block_.size()),
-                                 Z_DEFAULT_COMPRESSION);
+                                 Z_BEST_SPEED);
     if (status == Z_MEM_ERROR) {
         throw std::bad_alloc();
     }
