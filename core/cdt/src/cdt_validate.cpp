@@ -1,7 +1,6 @@
 #include "cavity/core/cdt/cdt_validate.h"
 
 #include <algorithm>
-#include <map>
 #include <optional>
 #include <set>
 #include <utility>
@@ -92,6 +91,12 @@ struct BoxedMesh {
     std::vector<Triangle> triangles;  ///< each sorted, in increasing order
     std::vector<Box> triangle_boxes;
 };
+
+/// Named only when reported: building the name of every triangle cost a tenth of validating.
+std::string triangle_name(const Triangle& g, std::uint32_t base) {
+    return "triangle " + std::to_string(g[0] + base) + " " + std::to_string(g[1] + base) + " " +
+           std::to_string(g[2] + base);
+}
 
 std::string tet_name(const std::array<std::uint32_t, 4>& t, int base) {
     std::string s = "tetrahedron";
@@ -316,22 +321,33 @@ struct Sides {
     std::array<std::uint32_t, 2> tet{};
 };
 
-/// Each mesh triangle (sorted) with its tetrahedra.
-using TriangleSides = std::map<Triangle, Sides>;
+/// Each mesh triangle (its vertices sorted) with its tetrahedra, in increasing order of triangle.
+using TriangleSides = std::vector<std::pair<Triangle, Sides>>;
 
 TriangleSides triangle_sides(std::span<const std::array<std::uint32_t, 4>> tets) {
-    TriangleSides sides;
+    // Sorting (triangle, tetrahedron) pairs groups each triangle's tetrahedra, in increasing
+    // tetrahedron order; a map of triangles cost a node allocation per triangle.
+    std::vector<std::pair<Triangle, std::uint32_t>> faces;
+    faces.reserve(4 * tets.size());
     for (std::uint32_t t = 0; t < tets.size(); ++t) {
         for (int f = 0; f < 4; ++f) {
             const auto g = facet_vertices(tets[t], f);
             Triangle s{g[0], g[1], g[2]};
             std::sort(s.begin(), s.end());
-            Sides& on = sides[s];
-            if (on.count < 2) {
-                on.tet[on.count] = t;
-            }
-            ++on.count;
+            faces.push_back({s, t});
         }
+    }
+    std::sort(faces.begin(), faces.end());
+    TriangleSides sides;
+    for (const auto& [g, t] : faces) {
+        if (sides.empty() || sides.back().first != g) {
+            sides.push_back({g, Sides{}});
+        }
+        Sides& on = sides.back().second;
+        if (on.count < 2) {
+            on.tet[on.count] = t;
+        }
+        ++on.count;
     }
     return sides;
 }
@@ -435,16 +451,14 @@ void check_carved_complex(const Plc& plc,
     }
     for (const auto& [g, on] : sides) {
         const auto b = static_cast<std::uint32_t>(base);
-        const std::string name = "triangle " + std::to_string(g[0] + b) + " " +
-                                 std::to_string(g[1] + b) + " " + std::to_string(g[2] + b);
         if (on.count > 2) {
-            report.add(name + " is on " + std::to_string(on.count) + " tetrahedra");
+            report.add(triangle_name(g, b) + " is on " + std::to_string(on.count) + " tetrahedra");
         } else if (on.count == 2 &&
                    predicates::orient3d(
                        pts[g[0]], pts[g[1]], pts[g[2]], pts[apex(tets[on.tet[0]], g)]) ==
                        predicates::orient3d(
                            pts[g[0]], pts[g[1]], pts[g[2]], pts[apex(tets[on.tet[1]], g)])) {
-            report.add(name + ": its two tetrahedra are on the same side");
+            report.add(triangle_name(g, b) + ": its two tetrahedra are on the same side");
         }
     }
 }
@@ -518,12 +532,10 @@ CdtValidation validate_cdt(const Plc& plc,
         if (constrained.contains(g)) {
             continue;
         }
-        const std::string name = "triangle " + std::to_string(g[0] + b) + " " +
-                                 std::to_string(g[1] + b) + " " + std::to_string(g[2] + b);
         if (on.count == 1) {
             // The hull's boundary was checked convex; a carved domain's must be polygons.
             if (carved) {
-                report.add(name + " bounds the carved domain but is in no polygon");
+                report.add(triangle_name(g, b) + " bounds the carved domain but is in no polygon");
             }
             continue;
         }
@@ -533,7 +545,7 @@ CdtValidation validate_cdt(const Plc& plc,
         if (perturbation::insphere_sos(
                 pts[t[1]], pts[t[0]], pts[t[2]], pts[t[3]], pts[q], {t[1], t[0], t[2], t[3], q}) ==
             Sign::kPos) {
-            report.add(name + " is in no polygon and not locally Delaunay");
+            report.add(triangle_name(g, b) + " is in no polygon and not locally Delaunay");
         }
     }
     return result;
