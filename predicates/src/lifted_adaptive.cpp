@@ -6,6 +6,7 @@
 
 #include "cavity/predicates/detail/expansion.h"
 #include "double_double.h"
+#include "fused_products.h"
 #include "small_expansion.h"
 #include "small_integers.h"
 
@@ -190,9 +191,9 @@ double permanent(const LiftedRows& r) {
 // magnitudes stay below (1 + eps) times the permanent, below 2^917.
 constexpr double kDoubleDoubleBound = 58.0;
 
-}  // namespace
-
-std::optional<Sign> lifted_double_double(const LiftedRows& r) {
+/// The determinant of the double-double stage, its products' errors found the K way.
+template <ProductKind K>
+[[gnu::always_inline]] inline DoubleDouble lifted_determinant_dd(const LiftedRows& r) {
     DoubleDouble x[4], y[4], z[4], w[4];
     for (int i = 0; i < 4; ++i) {
         x[i] = {r.x[i], r.xt[i]};
@@ -203,21 +204,50 @@ std::optional<Sign> lifted_double_double(const LiftedRows& r) {
     DoubleDouble m2[4][4];
     for (int i = 0; i < 4; ++i) {
         for (int j = i + 1; j < 4; ++j) {
-            m2[i][j] = difference(product(x[i], y[j]), product(x[j], y[i]));
+            m2[i][j] = difference(product<K>(x[i], y[j]), product<K>(x[j], y[i]));
         }
     }
-    auto minor3 = [&](int i, int j, int k) {
-        return sum(difference(product(z[i], m2[j][k]), product(z[j], m2[i][k])),
-                   product(z[k], m2[i][j]));
-    };
-    auto term = [&](int l, const DoubleDouble& minor) {
+    // Written out rather than as lambdas: a lambda not inlined would be compiled outside the
+    // FMA target, where __builtin_fma is a library call.
+    DoubleDouble minor3[4];  // abc, abd, acd, bcd
+    constexpr int kMinor[4][3] = {{kA, kB, kC}, {kA, kB, kD}, {kA, kC, kD}, {kB, kC, kD}};
+    for (int m = 0; m < 4; ++m) {
+        const int i = kMinor[m][0], j = kMinor[m][1], k = kMinor[m][2];
+        minor3[m] = sum(difference(product<K>(z[i], m2[j][k]), product<K>(z[j], m2[i][k])),
+                        product<K>(z[k], m2[i][j]));
+    }
+    DoubleDouble term[4];  // lift_l times the minor of the other three rows, l = d, c, b, a
+    constexpr int kLift[4] = {kD, kC, kB, kA};
+    for (int m = 0; m < 4; ++m) {
+        const int l = kLift[m];
         const DoubleDouble lift =
-            difference(sum(sum(square(x[l]), square(y[l])), square(z[l])), w[l]);
-        return product(lift, minor);
-    };
-    const DoubleDouble det =
-        sum(difference(term(kD, minor3(kA, kB, kC)), term(kC, minor3(kA, kB, kD))),
-            difference(term(kB, minor3(kA, kC, kD)), term(kA, minor3(kB, kC, kD))));
+            difference(sum(sum(square<K>(x[l]), square<K>(y[l])), square<K>(z[l])), w[l]);
+        term[m] = product<K>(lift, minor3[m]);
+    }
+    return sum(difference(term[0], term[1]), difference(term[2], term[3]));
+}
+
+#if CAVITY_FUSED_PRODUCTS
+[[gnu::target("fma")]] DoubleDouble lifted_determinant_fused(const LiftedRows& r) {
+    return lifted_determinant_dd<ProductKind::kFused>(r);
+}
+#endif
+
+}  // namespace
+
+DoubleDouble lifted_double_double_determinant(const LiftedRows& rows, ProductKind kind) {
+#if CAVITY_FUSED_PRODUCTS
+    if (kind == ProductKind::kFused) {
+        return lifted_determinant_fused(rows);
+    }
+#endif
+    (void)kind;
+    return lifted_determinant_dd<ProductKind::kDekker>(rows);
+}
+
+std::optional<Sign> lifted_double_double(const LiftedRows& r) {
+    const DoubleDouble det = lifted_double_double_determinant(
+        r, fused_products_available() ? ProductKind::kFused : ProductKind::kDekker);
     if (std::abs(det.hi) * kLowerScale > (kDoubleDoubleBound * permanent(r)) * kBoundScale) {
         return det.hi > 0.0 ? Sign::kPos : Sign::kNeg;
     }

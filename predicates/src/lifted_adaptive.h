@@ -7,6 +7,7 @@
 #include "cavity/predicates/detail/expansion.h"
 #include "cavity/predicates/point.h"
 #include "cavity/predicates/stage.h"
+#include "double_double.h"
 #include "staged_pipeline.h"
 
 // The expansion stages shared by insphere and orient4d: both are det[p - e, |p - e|^2 - dw_p] over
@@ -60,6 +61,10 @@ inline LiftedRows insphere_rows(const std::array<Point3, 5>& p) {
 /// error bound; none otherwise. Requires inputs in kLiftedAdaptiveWindow. Exposed for the tests
 /// that probe the bound.
 std::optional<Sign> lifted_double_double(const LiftedRows& rows);
+
+/// The determinant that stage evaluates, with the products' errors found the given way (kFused
+/// only where fused_products_available(); the two agree bit for bit, which the tests check).
+DoubleDouble lifted_double_double_determinant(const LiftedRows& rows, ProductKind kind);
 
 /// The verdict of the double-double stage or stages B and C (kAdaptive) or D (kExact); none when
 /// D's expansions would outgrow their buffers. Requires inputs in kLiftedAdaptiveWindow.
