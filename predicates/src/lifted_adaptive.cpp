@@ -207,10 +207,12 @@ template <ProductKind K>
             m2[i][j] = difference(product<K>(x[i], y[j]), product<K>(x[j], y[i]));
         }
     }
-    // Written out rather than as lambdas: a lambda not inlined would be compiled outside the
-    // FMA target, where __builtin_fma is a library call.
+    // Loops rather than lambdas: a lambda not inlined would be compiled outside the FMA target,
+    // where __builtin_fma is a library call. Unrolled, so that the rows are indexed by constants
+    // (1.57 G -> 1.39 G instructions for the stage on a 10^5-point sphere).
     DoubleDouble minor3[4];  // abc, abd, acd, bcd
     constexpr int kMinor[4][3] = {{kA, kB, kC}, {kA, kB, kD}, {kA, kC, kD}, {kB, kC, kD}};
+#pragma GCC unroll 4
     for (int m = 0; m < 4; ++m) {
         const int i = kMinor[m][0], j = kMinor[m][1], k = kMinor[m][2];
         minor3[m] = sum(difference(product<K>(z[i], m2[j][k]), product<K>(z[j], m2[i][k])),
@@ -218,6 +220,7 @@ template <ProductKind K>
     }
     DoubleDouble term[4];  // lift_l times the minor of the other three rows, l = d, c, b, a
     constexpr int kLift[4] = {kD, kC, kB, kA};
+#pragma GCC unroll 4
     for (int m = 0; m < 4; ++m) {
         const int l = kLift[m];
         const DoubleDouble lift =
