@@ -5,6 +5,7 @@
 #include <set>
 #include <utility>
 
+#include "box_grid.h"
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/edge_protection.h"
 #include "cavity/core/check/complex_from_tets.h"
@@ -43,45 +44,25 @@ struct ExactPoints {
     predicates::GenericPoint3 operator[](std::uint32_t i) const { return generic_point(points, i); }
 };
 
-/// An axis-aligned box in doubles: min and max are exact, so a box test never drops a simplex
-/// that meets a facet; it only spares exact tests of those that cannot. Implicit points are boxed
-/// by their coordinates rounded toward zero, a monotone rounding, which keeps that true.
-struct Box {
-    std::array<double, 3> lo{};
-    std::array<double, 3> hi{};
-
-    template <class Ids>
-    static Box of(const std::vector<Point3>& pts, const Ids& ids) {
-        Box b;
-        const Point3& p0 = pts[ids[0]];
-        b.lo = b.hi = {p0.x, p0.y, p0.z};
-        for (auto id : ids) {
-            const Point3& p = pts[id];
-            const std::array<double, 3> c{p.x, p.y, p.z};
-            for (std::size_t k = 0; k < 3; ++k) {
-                b.lo[k] = std::min(b.lo[k], c[k]);
-                b.hi[k] = std::max(b.hi[k], c[k]);
-            }
-        }
-        return b;
+/// The box of the points `ids` in doubles (box_grid.h): min and max are exact, so a box test never
+/// drops a simplex that meets a facet; it only spares exact tests of those that cannot. Implicit
+/// points are boxed by their coordinates rounded toward zero, a monotone rounding, which keeps
+/// that true.
+template <class Ids>
+Box box_of(const std::vector<Point3>& pts, const Ids& ids) {
+    Box b;
+    for (auto id : ids) {
+        b.add(pts[id]);
     }
-
-    bool meets(const Box& o) const {
-        for (std::size_t k = 0; k < 3; ++k) {
-            if (hi[k] < o.lo[k] || o.hi[k] < lo[k]) {
-                return false;
-            }
-        }
-        return true;
-    }
-};
+    return b;
+}
 
 Box facet_box(const Plc& plc, const PlcFacet& facet) {
     std::vector<std::uint32_t> corners;
     for (const auto& loop : facet.loops) {
         corners.insert(corners.end(), loop.begin(), loop.end());
     }
-    return Box::of(plc.points.points, corners);
+    return box_of(plc.points.points, corners);
 }
 
 /// The mesh simplices with their boxes, computed once for every facet's tests.
@@ -90,6 +71,35 @@ struct BoxedMesh {
     std::vector<Box> tet_boxes;
     std::vector<Triangle> triangles;  ///< each sorted, in increasing order
     std::vector<Box> triangle_boxes;
+    Box bounds;  ///< of every point
+};
+
+/// Uniform grids of the mesh's tetrahedron and triangle boxes, made on the first full scan of a
+/// polygon: a carved domain scans for every polygon, and testing each polygon's box against every
+/// simplex's was quadratic on surface meshes.
+class ScanIndex {
+public:
+    /// The tetrahedra (or triangles) whose boxes may meet `box`, for polygon `facet` (each polygon
+    /// asks once), in the grid's order: a function of the mesh alone.
+    std::vector<std::size_t> tets_near(const BoxedMesh& mesh, const Box& box, std::size_t facet) {
+        if (!tets_) {
+            tets_.emplace(mesh.bounds, mesh.tet_boxes);
+        }
+        return tets_->near(box, facet);
+    }
+
+    std::vector<std::size_t> triangles_near(const BoxedMesh& mesh,
+                                            const Box& box,
+                                            std::size_t facet) {
+        if (!triangles_) {
+            triangles_.emplace(mesh.bounds, mesh.triangle_boxes);
+        }
+        return triangles_->near(box, facet);
+    }
+
+private:
+    std::optional<BoxGrid> tets_;
+    std::optional<BoxGrid> triangles_;
 };
 
 /// Named only when reported: building the name of every triangle cost a tenth of validating.
@@ -155,11 +165,38 @@ private:
     std::uint32_t stamp_ = 0;
 };
 
+/// The side of the facet's plane point v lies on: zero without a predicate for the facet's own
+/// corners, the commonest question near a facet and orient3d's most expensive answer.
+class FacetSide {
+public:
+    FacetSide(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane)
+        : plc_(plc), plane_(plane) {
+        for (const auto& loop : facet.loops) {
+            corners_.insert(corners_.end(), loop.begin(), loop.end());
+        }
+        std::sort(corners_.begin(), corners_.end());
+    }
+
+    Sign operator()(std::uint32_t v) const {
+        return std::binary_search(corners_.begin(), corners_.end(), v)
+                   ? Sign::kZero
+                   : plane_.side(generic_point(plc_.points, v));
+    }
+
+private:
+    const Plc& plc_;
+    const ExactPlane& plane_;
+    std::vector<std::uint32_t> corners_;
+};
+
 /// True when mesh triangle g lies in the facet's plane with its centroid in the facet's region.
-bool in_facet(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane, const Triangle& g) {
+bool in_facet(const Plc& plc,
+              const PlcFacet& facet,
+              const ExactPlane& plane,
+              const FacetSide& side,
+              const Triangle& g) {
     const ExactPoints pts{plc.points};
-    if (plane.side(pts[g[0]]) != Sign::kZero || plane.side(pts[g[1]]) != Sign::kZero ||
-        plane.side(pts[g[2]]) != Sign::kZero) {
+    if (side(g[0]) != Sign::kZero || side(g[1]) != Sign::kZero || side(g[2]) != Sign::kZero) {
         return false;
     }
     const ExactPoint a = exact_point(pts[g[0]]);
@@ -168,6 +205,26 @@ bool in_facet(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane, co
     const ExactPoint centroid{
         (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
     return in_facet_region(plc, facet, plane, centroid);
+}
+
+/// True when segment pq, whose ends lie strictly on opposite sides of the facet's plane, crosses it
+/// inside the facet's region. For a triangle without hole points, by three exact orientations
+/// (the crossing is inside the open triangle when pq turns the same way, strictly, around its
+/// three sides); otherwise at the rational crossing point.
+bool crosses_region(const Plc& plc,
+                    const PlcFacet& facet,
+                    const ExactPlane& plane,
+                    const predicates::GenericPoint3& p,
+                    const predicates::GenericPoint3& q) {
+    if (facet.loops.size() == 1 && facet.loops[0].size() == 3 && facet.holes.empty()) {
+        const ExactPoints pts{plc.points};
+        const auto& loop = facet.loops[0];
+        const Sign first = predicates::orient3d(p, q, pts[loop[0]], pts[loop[1]]);
+        return first != Sign::kZero &&
+               predicates::orient3d(p, q, pts[loop[1]], pts[loop[2]]) == first &&
+               predicates::orient3d(p, q, pts[loop[2]], pts[loop[0]]) == first;
+    }
+    return in_facet_region(plc, facet, plane, plane.crossing(exact_point(p), exact_point(q)));
 }
 
 /// A polygon that is one triangle without hole points, when the mesh has that triangle: then it is
@@ -200,6 +257,7 @@ std::optional<Triangle> facet_triangle(const PlcFacet& facet, const BoxedMesh& m
 std::optional<std::vector<Triangle>> covering_faces(const Plc& plc,
                                                     const PlcFacet& facet,
                                                     const ExactPlane& plane,
+                                                    const FacetSide& side,
                                                     const BoxedMesh& mesh,
                                                     VertexTriangles& around) {
     around.next_search();
@@ -218,7 +276,7 @@ std::optional<std::vector<Triangle>> covering_faces(const Plc& plc,
         frontier.pop_back();
         for (std::uint32_t k : around.of(v)) {
             const Triangle& g = mesh.triangles[k];
-            if (!around.first_visit_of_triangle(k) || !in_facet(plc, facet, plane, g)) {
+            if (!around.first_visit_of_triangle(k) || !in_facet(plc, facet, plane, side, g)) {
                 continue;
             }
             faces.push_back(g);
@@ -248,6 +306,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
                                     std::size_t index,
                                     const BoxedMesh& mesh,
                                     VertexTriangles& around,
+                                    ScanIndex& index_of_mesh,
                                     bool carved,
                                     Report& report) {
     const PlcFacet& facet = plc.facets[index];
@@ -263,30 +322,27 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         report.add(name + ": corners are collinear");
         return faces;
     }
+    const FacetSide side(plc, facet, *plane);
     if (!carved) {
-        if (auto found = covering_faces(plc, facet, *plane, mesh, around)) {
+        if (auto found = covering_faces(plc, facet, *plane, side, mesh, around)) {
             return std::move(*found);
         }
     }
     const ExactPoints pts{plc.points};
     const Box box = facet_box(plc, facet);
-    for (std::size_t k = 0; k < mesh.tets.size(); ++k) {
+    for (const std::size_t k : index_of_mesh.tets_near(mesh, box, index)) {
         if (!box.meets(mesh.tet_boxes[k])) {
             continue;
         }
         const auto& t = mesh.tets[k];
         std::array<int, 4> s{};
         for (std::size_t i = 0; i < 4; ++i) {
-            s[i] = static_cast<int>(plane->side(pts[t[i]]));
+            s[i] = static_cast<int>(side(t[i]));
         }
         for (std::size_t i = 0; i < 4; ++i) {
             for (std::size_t j = 0; j < 4; ++j) {
                 if (s[i] < 0 && s[j] > 0) {
-                    if (in_facet_region(
-                            plc,
-                            facet,
-                            *plane,
-                            plane->crossing(exact_point(pts[t[i]]), exact_point(pts[t[j]])))) {
+                    if (crosses_region(plc, facet, *plane, pts[t[i]], pts[t[j]])) {
                         report.add(tet_name(t, plc.points.index_base) + " crosses " + name);
                     }
                     i = j = 4;
@@ -296,12 +352,12 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         }
     }
     Rational covered = 0;
-    for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+    for (const std::size_t k : index_of_mesh.triangles_near(mesh, box, index)) {
         const Triangle& g = mesh.triangles[k];
         if (!box.meets(mesh.triangle_boxes[k])) {
             continue;
         }
-        if (in_facet(plc, facet, *plane, g)) {
+        if (in_facet(plc, facet, *plane, side, g)) {
             faces.push_back(g);
             covered += triangle_area2(*plane,
                                       exact_point(plc.points, g[0]),
@@ -509,20 +565,25 @@ CdtValidation validate_cdt(const Plc& plc,
     if (!result.ok()) {
         return result;
     }
-    BoxedMesh mesh{tets, {}, {}, {}};
+    BoxedMesh mesh{tets, {}, {}, {}, {}};
     for (const auto& [g, on] : sides) {
         mesh.triangles.push_back(g);
     }
     for (const auto& t : tets) {
-        mesh.tet_boxes.push_back(Box::of(plc.points.points, t));
+        mesh.tet_boxes.push_back(box_of(plc.points.points, t));
     }
     for (const Triangle& g : mesh.triangles) {
-        mesh.triangle_boxes.push_back(Box::of(plc.points.points, g));
+        mesh.triangle_boxes.push_back(box_of(plc.points.points, g));
+    }
+    for (const Point3& p : plc.points.points) {
+        mesh.bounds.add(p);
     }
     VertexTriangles around(mesh.triangles, plc.points.size());
+    ScanIndex index_of_mesh;
     std::set<Triangle> constrained;
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
-        for (const Triangle& g : polygon_faces(plc, f, mesh, around, carved, report)) {
+        for (const Triangle& g :
+             polygon_faces(plc, f, mesh, around, index_of_mesh, carved, report)) {
             constrained.insert(g);
         }
     }

@@ -711,6 +711,22 @@ TEST(Messages, ReaderRefusesAHolePointOnASide) {
     std::filesystem::remove(path);
 }
 
+TEST(Messages, ValidatorFindsTetrahedraCrossingATriangle) {
+    // A triangle and two points above and below it, nearly over its inside: the Delaunay
+    // triangulation of the five points has the edge between the two, which crosses the triangle
+    // inside it when the points are over its inside and misses it when they are over the
+    // outside (the crossing of a triangular polygon is decided by orientations, without the
+    // rational crossing point; the square facets of ValidatorNamesFileIds take the other path).
+    for (const bool inside : {true, false}) {
+        const double x = inside ? 1.0 : 3.0;
+        const Plc plc =
+            make_plc({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {x, x, 1}, {x, x, -1}}, {Loops{{0, 1, 2}}});
+        const auto tets = delaunay(plc);
+        const CdtValidation result = validate_cdt(plc, tets, CdtDomain::kConvexHull);
+        EXPECT_EQ(mentions(result.problems, "crosses facet"), inside) << joined(result.problems);
+    }
+}
+
 TEST(Messages, ValidatorNamesFileIds) {
     const auto path = write_temp("one_based_valid.poly", kOneBasedPoly);
     Plc plc = read_poly(path);
