@@ -207,26 +207,6 @@ bool in_facet(const Plc& plc,
     return in_facet_region(plc, facet, plane, centroid);
 }
 
-/// True when segment pq, whose ends lie strictly on opposite sides of the facet's plane, crosses it
-/// inside the facet's region. For a triangle without hole points, by three exact orientations
-/// (the crossing is inside the open triangle when pq turns the same way, strictly, around its
-/// three sides); otherwise at the rational crossing point.
-bool crosses_region(const Plc& plc,
-                    const PlcFacet& facet,
-                    const ExactPlane& plane,
-                    const predicates::GenericPoint3& p,
-                    const predicates::GenericPoint3& q) {
-    if (facet.loops.size() == 1 && facet.loops[0].size() == 3 && facet.holes.empty()) {
-        const ExactPoints pts{plc.points};
-        const auto& loop = facet.loops[0];
-        const Sign first = predicates::orient3d(p, q, pts[loop[0]], pts[loop[1]]);
-        return first != Sign::kZero &&
-               predicates::orient3d(p, q, pts[loop[1]], pts[loop[2]]) == first &&
-               predicates::orient3d(p, q, pts[loop[2]], pts[loop[0]]) == first;
-    }
-    return in_facet_region(plc, facet, plane, plane.crossing(exact_point(p), exact_point(q)));
-}
-
 /// A polygon that is one triangle without hole points, when the mesh has that triangle: then it is
 /// the polygon's only face, and a valid complex has no tetrahedron crossing it (the reason is
 /// covering_faces'). Most polygons of a surface mesh are met here, without rational arithmetic.
@@ -342,7 +322,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         for (std::size_t i = 0; i < 4; ++i) {
             for (std::size_t j = 0; j < 4; ++j) {
                 if (s[i] < 0 && s[j] > 0) {
-                    if (crosses_region(plc, facet, *plane, pts[t[i]], pts[t[j]])) {
+                    if (crosses_facet_region(plc, facet, *plane, pts[t[i]], pts[t[j]])) {
                         report.add(tet_name(t, plc.points.index_base) + " crosses " + name);
                     }
                     i = j = 4;

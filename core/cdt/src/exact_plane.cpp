@@ -328,6 +328,22 @@ bool in_facet_region(const Plc& plc,
     return true;
 }
 
+bool crosses_facet_region(const Plc& plc,
+                          const PlcFacet& facet,
+                          const ExactPlane& plane,
+                          const predicates::GenericPoint3& p,
+                          const predicates::GenericPoint3& q) {
+    if (facet.loops.size() == 1 && facet.loops[0].size() == 3 && facet.holes.empty()) {
+        const auto& loop = facet.loops[0];
+        const auto corner = [&](std::size_t i) { return generic_point(plc.points, loop[i]); };
+        const predicates::Sign first = predicates::orient3d(p, q, corner(0), corner(1));
+        return first != predicates::Sign::kZero &&
+               predicates::orient3d(p, q, corner(1), corner(2)) == first &&
+               predicates::orient3d(p, q, corner(2), corner(0)) == first;
+    }
+    return in_facet_region(plc, facet, plane, plane.crossing(exact_point(p), exact_point(q)));
+}
+
 Rational facet_region_area2(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane) {
     const int drop = plane.dropped_axis();
     std::vector<std::vector<Point2>> loops;

@@ -99,6 +99,16 @@ bool in_facet_region(const Plc& plc,
                      const ExactPlane& plane,
                      const ExactPoint& x);
 
+/// True when segment pq, whose ends lie strictly on opposite sides of the facet's plane, crosses
+/// it inside the facet's region. For a triangle without hole points by three exact orientations
+/// (the crossing is inside the open triangle exactly when pq turns the same way, strictly,
+/// around its three sides), without rationals; otherwise at the rational crossing point.
+bool crosses_facet_region(const Plc& plc,
+                          const PlcFacet& facet,
+                          const ExactPlane& plane,
+                          const predicates::GenericPoint3& p,
+                          const predicates::GenericPoint3& q);
+
 /// Twice the area of the facet's region (the same rule), measured in the projection (exact). With
 /// non-crossing loops every face of the arrangement is "inside loop L, outside L's children": its
 /// area is L's minus its children's, and it counts unless a hole point lies in it.

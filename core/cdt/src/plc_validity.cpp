@@ -314,9 +314,7 @@ std::vector<std::string> plc_violations(
                     report.add(edge_name(plc, e.edge) + ", a side of " + facet_name(plc, *g) +
                                ", lies inside it: the two coplanar facets overlap");
                 }
-            } else if (sp * sq < 0 &&
-                       in_facet_region(
-                           plc, facet, *plane, plane->crossing(exact_point(p), exact_point(q)))) {
+            } else if (sp * sq < 0 && crosses_facet_region(plc, facet, *plane, p, q)) {
                 report.add(edge_name(plc, e.edge) +
                            (e.owners.empty()
                                 ? " (a segment)"

@@ -125,6 +125,25 @@ TEST(PlcValidity, VertexInsideAPolygonIsAccepted) {
     EXPECT_TRUE(used) << "the vertex is not a corner of the square's triangles";
 }
 
+TEST(PlcValidity, EdgeThroughATriangle) {
+    // A triangular polygon is crossed inside when the edge turns the same way around its three
+    // sides (no rational crossing point); through the triangle's plane outside it, it is not.
+    for (const bool inside : {true, false}) {
+        const double x = inside ? 1.0 : 3.0;
+        Plc plc = make_plc({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 4}, {x, x, 1}, {x, x, -1}},
+                           {Loops{{0, 1, 2}}, Loops{{0, 1, 3}}, Loops{{0, 2, 3}}, Loops{{1, 2, 3}}},
+                           {{4, 5}});
+        const auto found = violations(plc);
+        if (inside) {
+            ASSERT_EQ(found.size(), 1u) << joined(found);
+            EXPECT_TRUE(mentions(found, "test: facet 0: edge 4-5 (a segment) crosses it"))
+                << found[0];
+        } else {
+            EXPECT_TRUE(found.empty()) << joined(found);
+        }
+    }
+}
+
 TEST(PlcValidity, EdgeThroughAPolygon) {
     Plc plc = cube_with_square();
     plc.points.points.push_back({1.5, 2, 1});
