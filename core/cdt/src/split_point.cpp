@@ -7,6 +7,7 @@
 
 #include "cavity/core/base/assert.h"
 #include "cavity/core/cdt/edge_protection.h"
+#include "exact_plane.h"
 
 namespace cavity::core {
 
@@ -44,6 +45,12 @@ constexpr double kLowestAim = 0.2;
 /// The window around the aim searched for a point with double coordinates (protection_point).
 constexpr double kDoubleWindow = 0.05;
 
+/// The finest dyadic parameters tried first for a double point with short coordinates, and how
+/// near the aim they must be: 2^-11 of the piece, which the grid at j = 10 always meets, since
+/// moving the split off the encroacher's projection leaves it encroaching a piece.
+constexpr int kShortestBits = 10;
+constexpr double kShortWindow = 0x1p-11;
+
 }  // namespace
 
 double split_target(const Point3& p, const Point3& q, const std::optional<SplitAim>& aim) {
@@ -75,6 +82,20 @@ std::optional<GenericPoint3> split_point(const GenericPoint3& p,
     const auto* pp = std::get_if<Point3>(&p);
     const auto* pq = std::get_if<Point3>(&q);
     if (pp != nullptr && pq != nullptr) {
+        // The coarsest dyadic parameter k / 2^j near the aim whose point is a double: its
+        // coordinates stay short (the midpoint when the aim is the middle), as a rounding-free
+        // output wants; else the nearest double point that the exact search finds.
+        for (int j = 1; j <= kShortestBits; ++j) {
+            const double steps = std::ldexp(1.0, j);
+            const double k = std::nearbyint(target * steps);
+            if (k <= 0 || k >= steps || std::abs(k / steps - target) > kShortWindow) {
+                continue;
+            }
+            const auto s = predicates::segment_parameter_point(*pp, *pq, k, steps);
+            if (s && exact_point(rounded_point(*s)) == exact_point(GenericPoint3(*s))) {
+                return GenericPoint3(rounded_point(*s));
+            }
+        }
         if (const auto d = protection_point(
                 *pp, *pq, target, target - kDoubleWindow, target + kDoubleWindow)) {
             return GenericPoint3(*d);

@@ -28,9 +28,11 @@ double split_target(const Point3& p, const Point3& q, const std::optional<SplitA
 /// A point exactly on the open piece pq (p, q as protect_edges made them: input points, double
 /// points on a segment, or SegmentParameterPoints of one base edge) near parameter `target` of pq:
 /// a point with double coordinates within 1/20 of the piece when the ends are doubles and one is
-/// there, else the SegmentParameterPoint of the base edge nearest the target on a dyadic grid at
-/// least 1024 times finer than the piece. nullopt when the base parameters would need a
-/// denominator beyond 2^53 (the piece is 2^-52 of its base edge).
+/// there (first the one at the coarsest dyadic parameter k / 2^j, j <= 10, within 2^-11 of the
+/// target, for short coordinates: the midpoint when the target is 1/2 and it is a double), else the
+/// SegmentParameterPoint of the base edge nearest the target on a dyadic grid at least 1024 times
+/// finer than the piece. nullopt when the base parameters would need a denominator beyond 2^53 (the
+/// piece is 2^-52 of its base edge).
 std::optional<GenericPoint3> split_point(const GenericPoint3& p,
                                          const GenericPoint3& q,
                                          double target);
