@@ -1,9 +1,12 @@
 #include "cavity/core/cdt/edge_protection.h"
 
 #include <algorithm>
+#include <cmath>
+#include <deque>
 #include <numeric>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <variant>
 
@@ -11,7 +14,9 @@
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/plc_validity.h"
 #include "cavity/core/live/delaunay_triangulation.h"
+#include "cavity/core/mesh/star.h"
 #include "exact_plane.h"
+#include "split_point.h"
 
 namespace cavity::core {
 
@@ -79,112 +84,239 @@ std::vector<Edge> unprotected_edges(const Plc& plc) {
 
 namespace {
 
-using predicates::GenericPoint3;
-using predicates::SegmentParameterPoint;
-
-bool same(const Point3& p, const Point3& q) {
-    return p.x == q.x && p.y == q.y && p.z == q.z;
+std::uint64_t edge_key(std::uint32_t p, std::uint32_t q) {
+    return (std::uint64_t{std::min(p, q)} << 32) | std::max(p, q);
 }
 
-/// The implicit point halfway between p and q, two points of the segment of base edge ab (the
-/// edge between input points that p or q, an implicit point, was made on): parameters are dyadic,
-/// n / 2^j, so the midpoint's is again dyadic with doubles for numerator and denominator.
-/// nullopt when the denominator would pass 2^53 (53 halvings of one edge), where the numerator
-/// stops being exact.
-std::optional<SegmentParameterPoint> implicit_midpoint(const GenericPoint3& p,
-                                                       const GenericPoint3& q) {
-    const auto* base = std::get_if<SegmentParameterPoint>(&p);
-    if (base == nullptr) {
-        base = &std::get<SegmentParameterPoint>(q);
+/// The points that splitting made between p and q (recursively, in order from p to q, q
+/// included): how a PLC side p -> q reads after protection.
+void append_pieces(const std::unordered_map<std::uint64_t, std::uint32_t>& split_at,
+                   std::uint32_t p,
+                   std::uint32_t q,
+                   std::vector<std::uint32_t>& out) {
+    const auto it = split_at.find(edge_key(p, q));
+    if (it == split_at.end()) {
+        out.push_back(q);
+        return;
     }
-    // The parameter of an endpoint: its own when implicit, else 0 or 1 for the base's ends
-    // (the pieces of a base edge end only at its ends and at points made on it).
-    const auto parameter = [&](const GenericPoint3& g) -> std::pair<double, double> {
-        if (const auto* s = std::get_if<SegmentParameterPoint>(&g)) {
-            CAVITY_ASSERT(same(s->a, base->a) && same(s->b, base->b),
-                          "the pieces of a protected edge share its base");
-            return {s->numerator, s->denominator};
+    append_pieces(split_at, p, it->second, out);
+    append_pieces(split_at, it->second, q, out);
+}
+
+/// Replaces every PLC segment and loop side by its pieces, once at the end (splitting the PLC at
+/// each insertion would cost a pass over it per point).
+void apply_splits(Plc& plc, const std::unordered_map<std::uint64_t, std::uint32_t>& split_at) {
+    std::vector<std::array<std::uint32_t, 2>> segments;
+    std::vector<std::uint32_t> run;
+    for (const auto& s : plc.segments) {
+        run.assign(1, s[0]);
+        append_pieces(split_at, s[0], s[1], run);
+        for (std::size_t i = 0; i + 1 < run.size(); ++i) {
+            segments.push_back({run[i], run[i + 1]});
         }
-        const Point3& x = std::get<Point3>(g);
-        CAVITY_ASSERT(same(x, base->a) || same(x, base->b),
-                      "a piece of a protected edge ends on its base");
-        return {same(x, base->a) ? 0.0 : 1.0, 1.0};
-    };
-    const auto [np, dp] = parameter(p);
-    const auto [nq, dq] = parameter(q);
-    // (np/dp + nq/dq) / 2 = (np (D/dp) + nq (D/dq)) / 2D with D = max(dp, dq): integers at most
-    // 2D scaled by powers of two, so every operation is exact while 2D <= 2^53.
-    const double d = std::max(dp, dq);
-    if (2 * d > 0x1p53) {
-        return std::nullopt;
     }
-    return SegmentParameterPoint{base->a, base->b, np * (d / dp) + nq * (d / dq), 2 * d};
+    plc.segments = std::move(segments);
+    for (auto& facet : plc.facets) {
+        for (auto& loop : facet.loops) {
+            std::vector<std::uint32_t> split;
+            for (std::size_t i = 0; i < loop.size(); ++i) {
+                split.push_back(loop[i]);
+                append_pieces(split_at, loop[i], loop[(i + 1) % loop.size()], split);
+                split.pop_back();  // the next side starts with it
+            }
+            loop = std::move(split);
+        }
+    }
 }
+
+/// The live Delaunay triangulation that protect_edges inserts into, with the questions it asks
+/// by the PLC's point indices.
+class ProtectionMesh {
+public:
+    explicit ProtectionMesh(DelaunayTriangulation dt) : dt_(std::move(dt)) {
+        const Geometry& g = dt_.geometry();
+        vertex_.assign(dt_.point_count(), kNoVertex);
+        for (VertexId v = 0; v < g.size(); ++v) {
+            vertex_[g.key(v)] = v;
+        }
+    }
+
+    /// The live tetrahedra around point i (its star).
+    std::vector<TetId> star(std::uint32_t i) const {
+        return vertex_star(dt_.storage(), vertex_[i]);
+    }
+
+    /// True when point j is a vertex of one of the tetrahedra `star`.
+    bool has_vertex(const std::vector<TetId>& star, std::uint32_t j) const {
+        const VertexId w = vertex_[j];
+        for (TetId t : star) {
+            const TetVertices& v = dt_.storage().vertices(t);
+            if (std::find(v.begin(), v.end(), w) != v.end()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /// Inserts the point with index point_count(), exactly `exact`, rounded `rounded`.
+    void insert(const GenericPoint3& exact, const Point3& rounded) {
+        const std::uint32_t key = dt_.insert(exact, rounded);
+        if (key + 1 != dt_.point_count()) {
+            throw InternalError("internal error: a protection point repeats point " +
+                                std::to_string(key));
+        }
+        vertex_.push_back(static_cast<VertexId>(dt_.geometry().size() - 1));
+    }
+
+    /// The vertex that encroaches most upon edge pq (in the closed diametral ball, the largest
+    /// angle p-w-q) among the vertices of the stars of p and q, as a point index; nullopt when
+    /// none does. Decided on rounded coordinates: it only aims the split.
+    std::optional<std::uint32_t> reference(const std::vector<TetId>& star_p,
+                                           const std::vector<TetId>& star_q,
+                                           std::uint32_t p,
+                                           std::uint32_t q) const {
+        const Geometry& g = dt_.geometry();
+        const Point3& a = g.point(vertex_[p]);
+        const Point3& b = g.point(vertex_[q]);
+        std::optional<std::uint32_t> best;
+        double best_cos = 0;
+        for (const auto* star : {&star_p, &star_q}) {
+            for (TetId t : *star) {
+                for (VertexId w : dt_.storage().vertices(t)) {
+                    if (w == kGhostVertex || w == vertex_[p] || w == vertex_[q]) {
+                        continue;
+                    }
+                    const Point3& x = g.point(w);
+                    const double ux = a.x - x.x, uy = a.y - x.y, uz = a.z - x.z;
+                    const double vx = b.x - x.x, vy = b.y - x.y, vz = b.z - x.z;
+                    const double d = ux * vx + uy * vy + uz * vz;
+                    if (d > 0) {
+                        continue;  // outside the diametral ball
+                    }
+                    const double cosine = d / std::sqrt((ux * ux + uy * uy + uz * uz) *
+                                                        (vx * vx + vy * vy + vz * vz));
+                    if (!best || cosine < best_cos) {
+                        best = g.key(w);
+                        best_cos = cosine;
+                    }
+                }
+            }
+        }
+        return best;
+    }
+
+private:
+    DelaunayTriangulation dt_;
+    std::vector<VertexId> vertex_;  ///< by point index
+};
 
 }  // namespace
 
 Protection protect_edges(Plc& plc, std::size_t max_points) {
     Protection result;
+    result.rounds = 1;
     const auto base = static_cast<std::uint32_t>(plc.points.index_base);
-    for (;;) {
-        ++result.rounds;
-        const std::vector<Edge> missing = unprotected_edges(plc);
-        if (missing.empty()) {
-            return result;
-        }
-        if (result.rounds == 1) {
-            // Splitting never protects an edge that a point lies on or another edge crosses; later
-            // rounds split only pieces of these edges, which inherit the check.
-            require_edges_meet_properly(plc, missing);
-        }
-        for (const Edge& e : missing) {
-            const auto& a = plc.points.points[e[0]];
-            const auto& b = plc.points.points[e[1]];
-            const std::string name =
-                "edge " + std::to_string(e[0] + base) + "-" + std::to_string(e[1] + base);
-            if (result.inserted.size() >= max_points) {
-                throw Error(located_message(plc.source,
-                                            std::nullopt,
-                                            "still not edge-protected after inserting " +
-                                                std::to_string(max_points) + " points (" + name +
-                                                ")"));
-            }
-            const GenericPoint3 ga = generic_point(plc.points, e[0]);
-            const GenericPoint3 gb = generic_point(plc.points, e[1]);
-            const bool explicit_ends =
-                std::holds_alternative<Point3>(ga) && std::holds_alternative<Point3>(gb);
-            // A point with double coordinates when the edge's ends are input points and one
-            // exists; else the implicit midpoint, exactly on the edge (sos.h: its key is its
-            // index, after every older point's).
-            std::optional<GenericPoint3> m;
-            if (explicit_ends) {
-                if (const auto d = protection_point(a, b)) {
-                    m = *d;
-                }
-            }
-            if (!m) {
-                const auto s = explicit_ends ? predicates::segment_parameter_point(a, b, 1, 2)
-                                             : implicit_midpoint(ga, gb);
-                if (!s) {
-                    throw Error(located_message(
-                        plc.source,
-                        std::nullopt,
-                        name + " needs a split, but its pieces are already 2^-53 of it"));
-                }
-                if (plc.points.exact.empty()) {
-                    plc.points.exact.assign(plc.points.points.begin(), plc.points.points.end());
-                }
-                m = *s;
-            }
-            const auto id = static_cast<std::uint32_t>(plc.points.size());
-            plc.points.points.push_back(rounded_point(*m));
-            if (!plc.points.exact.empty()) {
-                plc.points.exact.push_back(*m);
-            }
-            result.inserted.push_back(id);
-            split_plc_edge(plc, e, id);
-        }
+    const auto inputs = static_cast<std::uint32_t>(plc.points.size());
+    DelaunayTriangulation dt = plc_delaunay(plc);
+    const std::vector<Edge> missing = unprotected_edges(plc, dt.tets());
+    if (missing.empty()) {
+        return result;
     }
+    // Splitting never protects an edge that a point lies on or another edge crosses; the pieces
+    // of the others inherit the check.
+    require_edges_meet_properly(plc, missing);
+    ProtectionMesh mesh(std::move(dt));
+    // By new point: the PLC edge between input points that it splits (its pieces' root).
+    std::vector<Edge> root_of;
+    const auto root = [&](std::uint32_t p, std::uint32_t q) -> Edge {
+        if (p >= inputs) {
+            return root_of[p - inputs];
+        }
+        if (q >= inputs) {
+            return root_of[q - inputs];
+        }
+        return {std::min(p, q), std::max(p, q)};
+    };
+    std::unordered_map<std::uint64_t, std::uint32_t> split_at;
+    // First in, first out from the sorted missing edges: deterministic, and a long edge's split
+    // is made before its pieces', which it may protect.
+    std::deque<Edge> queue(missing.begin(), missing.end());
+    // Every piece made so far: a later split can take a protected piece out of the triangulation
+    // again, so each pass ends by checking them all.
+    std::vector<Edge> pieces = plc_edges(plc);
+    const auto recheck = [&](std::deque<Edge>& out) {
+        ++result.rounds;
+        for (const Edge& e : pieces) {
+            if (!split_at.contains(edge_key(e[0], e[1])) &&
+                !mesh.has_vertex(mesh.star(e[0]), e[1])) {
+                out.push_back(e);
+            }
+        }
+    };
+    while (!queue.empty()) {
+        const Edge e = queue.front();
+        queue.pop_front();
+        const std::vector<TetId> star_p = mesh.star(e[0]);
+        if (mesh.has_vertex(star_p, e[1])) {
+            if (queue.empty()) {
+                recheck(queue);
+            }
+            continue;  // protected by an earlier split
+        }
+        const std::string name =
+            "edge " + std::to_string(e[0] + base) + "-" + std::to_string(e[1] + base);
+        if (result.inserted.size() >= max_points) {
+            throw Error(located_message(plc.source,
+                                        std::nullopt,
+                                        "still not edge-protected after inserting " +
+                                            std::to_string(max_points) + " points (" + name + ")"));
+        }
+        const std::vector<TetId> star_q = mesh.star(e[1]);
+        std::optional<SplitAim> aim;
+        if (const auto w = mesh.reference(star_p, star_q, e[0], e[1])) {
+            aim = SplitAim{plc.points.points[*w], std::nullopt};
+            // A reference on another segment from an input vertex c of this one: the sphere
+            // about c through it, so that the pieces near c shrink as the other segment's do.
+            const Edge own = root(e[0], e[1]);
+            if (*w >= inputs) {
+                const Edge other = root_of[*w - inputs];
+                for (std::uint32_t c : own) {
+                    if (other != own && (other[0] == c || other[1] == c)) {
+                        aim->shell_centre = plc.points.points[c];
+                    }
+                }
+            }
+        }
+        const GenericPoint3 gp = generic_point(plc.points, e[0]);
+        const GenericPoint3 gq = generic_point(plc.points, e[1]);
+        const double target = split_target(plc.points.points[e[0]], plc.points.points[e[1]], aim);
+        const std::optional<GenericPoint3> m = split_point(gp, gq, target);
+        if (!m) {
+            throw Error(
+                located_message(plc.source,
+                                std::nullopt,
+                                name + " needs a split, but its pieces are already 2^-52 of it"));
+        }
+        if (!std::holds_alternative<Point3>(*m) && plc.points.exact.empty()) {
+            plc.points.exact.assign(plc.points.points.begin(), plc.points.points.end());
+        }
+        const auto id = static_cast<std::uint32_t>(plc.points.size());
+        const Point3 rounded = rounded_point(*m);
+        plc.points.points.push_back(rounded);
+        if (!plc.points.exact.empty()) {
+            plc.points.exact.push_back(*m);
+        }
+        mesh.insert(*m, rounded);
+        root_of.push_back(root(e[0], e[1]));
+        result.inserted.push_back(id);
+        split_at.emplace(edge_key(e[0], e[1]), id);
+        queue.push_back({e[0], id});
+        queue.push_back({id, e[1]});
+        pieces.push_back({e[0], id});
+        pieces.push_back({id, e[1]});
+    }
+    apply_splits(plc, split_at);
+    return result;
 }
 
 }  // namespace cavity::core

@@ -127,25 +127,37 @@ void add_breakpoints(double a, double b, std::vector<Rational>& out) {
 }  // namespace
 
 std::optional<Point3> protection_point(const Point3& a, const Point3& b) {
+    return protection_point(a, b, 0.5, 0.0, 1.0);
+}
+
+std::optional<Point3> protection_point(
+    const Point3& a, const Point3& b, double target, double lo_bound, double hi_bound) {
     const std::array<double, 3> pa{a.x, a.y, a.z};
     const std::array<double, 3> pb{b.x, b.y, b.z};
-    std::vector<Rational> cuts{Rational(0), Rational(1)};
+    const Rational window_lo(std::max(lo_bound, 0.0));
+    const Rational window_hi(std::min(hi_bound, 1.0));
+    if (window_lo >= window_hi) {
+        return std::nullopt;
+    }
+    std::vector<Rational> cuts{window_lo, window_hi};
     for (std::size_t c = 0; c < 3; ++c) {
         add_breakpoints(pa[c], pb[c], cuts);
     }
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-    // The pieces, nearest the middle first.
-    const Rational half(1, 2);
+    // The pieces inside the window, nearest the target first.
+    const Rational aim(target);
     const auto distance = [&](std::size_t i) -> Rational {
-        if (cuts[i] <= half && half <= cuts[i + 1]) {
+        if (cuts[i] <= aim && aim <= cuts[i + 1]) {
             return 0;
         }
-        return cuts[i + 1] < half ? half - cuts[i + 1] : cuts[i] - half;
+        return cuts[i + 1] < aim ? aim - cuts[i + 1] : cuts[i] - aim;
     };
-    std::vector<std::size_t> pieces(cuts.size() - 1);
-    for (std::size_t i = 0; i < pieces.size(); ++i) {
-        pieces[i] = i;
+    std::vector<std::size_t> pieces;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+        if (window_lo <= cuts[i] && cuts[i + 1] <= window_hi) {
+            pieces.push_back(i);
+        }
     }
     std::stable_sort(pieces.begin(), pieces.end(), [&](std::size_t i, std::size_t j) {
         return distance(i) < distance(j);
@@ -172,7 +184,7 @@ std::optional<Point3> protection_point(const Point3& a, const Point3& b) {
         if (!t) {
             continue;
         }
-        // The member nearest 1/2 within [lo, hi], strictly inside (0, 1).
+        // The member nearest the target within [lo, hi], strictly inside (0, 1).
         Integer k_min = ceil_of((lo - t->offset) / t->step);
         Integer k_max = floor_of((hi - t->offset) / t->step);
         if (t->offset + k_min * t->step == 0) {
@@ -184,7 +196,8 @@ std::optional<Point3> protection_point(const Point3& a, const Point3& b) {
         if (k_min > k_max) {
             continue;
         }
-        const Integer k = std::clamp(floor_of((half - t->offset) / t->step + half), k_min, k_max);
+        const Rational half(1, 2);  // rounds to the nearest member
+        const Integer k = std::clamp(floor_of((aim - t->offset) / t->step + half), k_min, k_max);
         const Rational at = t->offset + k * t->step;
         std::array<double, 3> p{};
         bool exact = true;

@@ -33,6 +33,21 @@ Geometry::Geometry(std::vector<Point3> points,
     orient3d_static_ = predicates::Orient3dStaticFilter(box_lo_, box_hi_);
 }
 
+VertexId Geometry::append_implicit(const GenericPoint3& exact,
+                                   const Point3& rounded,
+                                   std::uint32_t key) {
+    CAVITY_ASSERT(!weighted(), "implicit points are unweighted");
+    if (!has_implicit()) {
+        exact_.assign(points_.begin(), points_.end());
+        plain_ = false;
+    }
+    points_.push_back(rounded);
+    widen_box(rounded);
+    exact_.push_back(exact);
+    keys_.push_back(key);
+    return static_cast<VertexId>(points_.size() - 1);
+}
+
 void Geometry::widen_box(const Point3& p) {
     if (points_.size() == 1) {
         box_lo_ = p;

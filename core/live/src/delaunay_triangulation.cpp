@@ -241,17 +241,42 @@ std::uint32_t DelaunayTriangulation::insert(const PointSet& batch,
     return base;
 }
 
+std::uint32_t DelaunayTriangulation::insert(const predicates::GenericPoint3& p,
+                                            const Point3& rounded) {
+    if (const auto* explicit_point = std::get_if<Point3>(&p)) {
+        return insert(*explicit_point);
+    }
+    State& s = *state_;
+    if (weighted()) {
+        throw Error("implicit points are unweighted: the triangulation is weighted");
+    }
+    const std::uint32_t key = s.next_key;
+    if (!std::isfinite(rounded.x) || !std::isfinite(rounded.y) || !std::isfinite(rounded.z)) {
+        throw Error("point " + std::to_string(std::int64_t{key} + s.index_base) +
+                    " has a non-finite coordinate");
+    }
+    ++s.next_key;
+    s.removed.push_back(false);
+    if (!s.vertex_of.empty()) {
+        s.vertex_of.push_back(kNoVertex);
+    }
+    return insert_appended(s.geometry.append_implicit(p, rounded, key), key);
+}
+
 std::uint32_t DelaunayTriangulation::insert_keyed(const Point3& p,
                                                   double weight,
                                                   std::uint32_t key) {
+    return insert_appended(state_->geometry.append(p, key, weight), key);
+}
+
+std::uint32_t DelaunayTriangulation::insert_appended(VertexId u, std::uint32_t key) {
     State& s = *state_;
     BowyerWatson<ArrayStorage, NullObserver>& bw = engine(s);
     const TetId start = start_tet();
-    const VertexId u = s.geometry.append(p, key, weight);
     if (!s.vertex_of.empty()) {
         s.vertex_of[key] = u;
     }
-    const TetId located = s.walk.locate(bw, p, start);
+    const TetId located = s.walk.locate(bw, s.geometry.point(u), start);
     const ConflictSeed seed = seek_conflict(bw, u, located, s.scratch);
     if (seed.duplicate != kNoVertex) {
         const std::uint32_t repeated = s.geometry.key(seed.duplicate);

@@ -147,6 +147,35 @@ TEST(DelaunayTriangulation, InsertionsEqualTheBatchOfAllPoints) {
     EXPECT_THROW(dt.insert({0.5, std::numeric_limits<double>::quiet_NaN(), 0.5}, 0.0), Error);
 }
 
+/// Implicit points (the CDT's edge protection inserts them): inserted one by one into a
+/// triangulation of explicit points, they give the tetrahedra of the batch construction of all the
+/// points with the same definitions, on a grid whose ties the perturbation decides.
+TEST(DelaunayTriangulation, ImplicitInsertionsEqualTheBatch) {
+    const PointSet grid = generate_points("grid", 216, 3);
+    PointSet all = grid;
+    all.exact.assign(grid.points.begin(), grid.points.end());
+    DelaunayTriangulation dt = live_in_input_order(grid);
+    for (std::uint32_t i = 0; i < 40; ++i) {
+        const Point3& a = grid.points[i];
+        const Point3& b = grid.points[(7 * i + 50) % grid.size()];
+        // Sevenths are not doubles, and no seventh of a grid step is a grid point: the rounding is
+        // only where the walk starts.
+        const double t = (1 + i % 6) / 7.0;
+        const auto s = predicates::segment_parameter_point(a, b, 1 + i % 6, 7);
+        ASSERT_TRUE(s);
+        const Point3 rounded{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t};
+        EXPECT_EQ(dt.insert(predicates::GenericPoint3(*s), rounded), all.size());
+        all.points.push_back(rounded);
+        all.exact.emplace_back(*s);
+    }
+    EXPECT_TRUE(dt.geometry().implicit(static_cast<VertexId>(dt.geometry().size() - 1)));
+    EXPECT_TRUE(dt.duplicates().empty());
+    EXPECT_TRUE(dt.check(CheckLevel::kComplex).empty());
+    EXPECT_EQ(canonical(dt.tets()), canonical(live_in_input_order(all).tets()));
+    // An explicit point after them goes through the generic predicates too.
+    EXPECT_EQ(dt.insert(predicates::GenericPoint3(Point3{0.25, 0.5, 0.75}), Point3{}), all.size());
+}
+
 /// A batch inserted along a space-filling curve gives what row-by-row insertion gives: the same
 /// tetrahedra, and the same repeats, inside the batch and of earlier points, the lowest equal row
 /// kept whatever the order.

@@ -38,7 +38,9 @@ std::vector<Edge> unprotected_edges(const Plc& plc);
 /// What protect_edges did.
 struct Protection {
     std::vector<std::uint32_t> inserted;  ///< indices of the new points, in insertion order
-    std::size_t rounds = 0;               ///< Delaunay triangulations computed
+    /// Passes over every PLC edge: the first on the Delaunay triangulation built from scratch,
+    /// each later one on the live triangulation after the queue of missing edges ran empty.
+    std::size_t rounds = 0;
 };
 
 /// The point protect_edges inserts on edge ab: a point strictly inside the segment, exactly on it,
@@ -58,17 +60,28 @@ struct Protection {
 /// binary grid first is the remedy.
 std::optional<Point3> protection_point(const Point3& a, const Point3& b);
 
-/// Splits unprotected PLC edges at protection points (appended to plc.points, replacing the edge in
-/// its segment and in every loop that has it) until every edge is protected. Before the first
-/// split it checks that no point lies inside an unprotected edge and no PLC edge crosses one
-/// (edge_violations), since splitting would never protect those.
-/// The split point of an edge between two explicit points is protection_point's double point when
-/// there is one; otherwise, and on every piece that has an implicit end, it is an implicit point
-/// (predicates::SegmentParameterPoint, exactly on the segment): the midpoint of the edge between
-/// the two explicit points it was first made on, at a dyadic parameter n / 2^j, whose numerator
-/// and denominator are doubles exactly. plc.points.exact then holds every point's definition and
-/// plc.points.points their rounding toward zero. The k-th point made has index and perturbation
-/// key n + k (sos.h), in a deterministic order.
+/// As above, searching only the parameters t in [lo, hi] (a + t (b - a); clipped to [0, 1]) for
+/// the double point nearest parameter `target`: where protect_edges wants its split.
+std::optional<Point3> protection_point(
+    const Point3& a, const Point3& b, double target, double lo, double hi);
+
+/// Splits unprotected PLC edges (appending the points to plc.points, and replacing each split
+/// edge by its pieces in its segment and in every loop that has it) until every edge is protected.
+/// Before the first split it checks that no point lies inside an unprotected edge and no PLC edge
+/// crosses one (edge_violations), since splitting would never protect those.
+/// It builds the Delaunay triangulation once and inserts each point into it (Si & Shewchuk's
+/// incremental segment recovery, as TetGen does it): a first-in first-out queue, from the sorted
+/// missing edges, whose next edge is skipped when it has become a Delaunay edge and else split,
+/// its two pieces queued; when the queue runs empty every piece is checked again (a later point
+/// can take an edge away). Where it splits is split_point.h's rule: at the projection of the
+/// vertex that encroaches most, on the sphere about a shared input vertex when that vertex lies
+/// on an adjacent segment, else at the midpoint; at a point with double coordinates
+/// (protection_point) when the piece's ends are doubles and one lies near the aim, else at an
+/// implicit point (predicates::SegmentParameterPoint, exactly on the segment) of the edge between
+/// doubles it was first made on, at a dyadic parameter n / 2^j whose numerator and denominator are
+/// doubles exactly. plc.points.exact then holds every point's definition and plc.points.points
+/// their rounding toward zero. The k-th point made has index and perturbation key n + k (sos.h),
+/// in a deterministic order.
 /// \throws Error naming the points or edges when the PLC is invalid as above, after `max_points`
 /// insertions, or when a piece would need a parameter finer than 2^-53.
 Protection protect_edges(Plc& plc, std::size_t max_points);

@@ -91,6 +91,13 @@ public:
         return static_cast<VertexId>(points_.size() - 1);
     }
 
+    /// Appends an unweighted point given exactly by `exact` (an implicit point: a Steiner point
+    /// of the CDT's edge protection), `rounded` being its coordinates rounded to doubles, with
+    /// perturbation key `key`. The first implicit point turns every test to the generic
+    /// predicates (see the top): the points before it become their own definitions.
+    /// Returns its vertex id.
+    VertexId append_implicit(const GenericPoint3& exact, const Point3& rounded, std::uint32_t key);
+
     WeightedPoint3 weighted_point(VertexId v) const {
         const Point3& p = points_[v];
         return {p.x, p.y, p.z, weights_[v]};

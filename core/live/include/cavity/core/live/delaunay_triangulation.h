@@ -69,6 +69,15 @@ public:
     /// \throws Error for a non-finite coordinate or weight (nothing changes).
     std::uint32_t insert(const Point3& p, double weight = 0.0);
 
+    /// Inserts a point given exactly by its definition (generic_point.h: an implicit point, as the
+    /// CDT's edge protection makes; unweighted triangulations only) and returns its input index,
+    /// point_count() before the call. `rounded` is its coordinates rounded to doubles, where the
+    /// walk looks for it; every exact decision reads the definition. The first implicit point
+    /// turns the triangulation's tests to the generic predicates. An implicit point never repeats
+    /// a vertex (as in triangulate()). \throws Error for a weighted triangulation or a non-finite
+    /// rounding (nothing changes).
+    std::uint32_t insert(const predicates::GenericPoint3& p, const Point3& rounded);
+
     /// Inserts every point of `batch` (with its weight when weighted), giving row r the input
     /// index point_count() + r, in the order `sequence` (a permutation of the rows: a
     /// space-filling curve keeps the walks short). The result is the one of inserting the rows
@@ -171,6 +180,9 @@ private:
     /// Inserts p as input index `key` (already handed out); returns `key`, or the index of the
     /// vertex it repeats.
     std::uint32_t insert_keyed(const Point3& p, double weight, std::uint32_t key);
+    /// Inserts vertex u, already appended to the geometry with key `key`, located from the
+    /// walk's start; returns as insert_keyed.
+    std::uint32_t insert_appended(VertexId u, std::uint32_t key);
 
     std::unique_ptr<State> state_;
 };
