@@ -59,20 +59,39 @@ void split_plc_edge(Plc& plc, const Edge& e, std::uint32_t m) {
 
 std::vector<Edge> unprotected_edges(const Plc& plc,
                                     std::span<const std::array<std::uint32_t, 4>> tets) {
-    std::vector<Edge> present;
-    present.reserve(tets.size() * 6);
+    // The PLC edges, sorted, are runs by their lower end; each tetrahedron edge looks in the run
+    // of its lower end (a few edges) instead of every tetrahedron edge being sorted (6 per
+    // tetrahedron: the largest cost of the CDT's checks on surface meshes).
+    const std::vector<Edge> edges = plc_edges(plc);
+    std::vector<std::uint32_t> run(plc.points.size() + 1, 0);
+    for (const Edge& e : edges) {
+        ++run[e[0] + 1];
+    }
+    for (std::size_t v = 1; v < run.size(); ++v) {
+        run[v] += run[v - 1];
+    }
+    std::vector<bool> present(edges.size(), false);
     for (const auto& t : tets) {
         for (std::size_t i = 0; i < 4; ++i) {
             for (std::size_t j = i + 1; j < 4; ++j) {
-                present.push_back({std::min(t[i], t[j]), std::max(t[i], t[j])});
+                const std::uint32_t a = std::min(t[i], t[j]);
+                const std::uint32_t b = std::max(t[i], t[j]);
+                if (a + 1 >= run.size()) {
+                    continue;  // not a point of the PLC: no PLC edge ends there
+                }
+                for (std::uint32_t k = run[a]; k < run[a + 1]; ++k) {
+                    if (edges[k][1] == b) {
+                        present[k] = true;
+                        break;
+                    }
+                }
             }
         }
     }
-    std::sort(present.begin(), present.end());
     std::vector<Edge> missing;
-    for (const Edge& e : plc_edges(plc)) {
-        if (!std::binary_search(present.begin(), present.end(), e)) {
-            missing.push_back(e);
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        if (!present[k]) {
+            missing.push_back(edges[k]);
         }
     }
     return missing;
