@@ -6,6 +6,9 @@
 #include <sys/mman.h>
 #include <unistd.h>
 #endif
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace cavity::core {
 
@@ -42,6 +45,12 @@ void PageReleaser::release_before(unsigned char* mark) {
     madvise(released_, end - start, MADV_DONTNEED);
 #endif
     released_ = reinterpret_cast<unsigned char*>(end);  // NOLINT(performance-no-int-to-ptr)
+}
+
+void release_free_heap() {
+#if defined(__GLIBC__)
+    malloc_trim(0);
+#endif
 }
 
 }  // namespace cavity::core

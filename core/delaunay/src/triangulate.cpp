@@ -1,11 +1,14 @@
 #include "cavity/core/delaunay/triangulate.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <string>
 #include <variant>
 
 #include "cavity/core/base/error.h"
+#include "cavity/core/base/page_releaser.h"
 #include "cavity/core/delaunay/insertion_driver.h"
 #include "cavity/core/geometry/bootstrap.h"
 #include "cavity/core/geometry/duplicates.h"
@@ -58,58 +61,85 @@ void check_input(const PointSet& input, std::span<const std::uint32_t> sequence)
 
 }  // namespace
 
+namespace {
+
+/// The engine's keys: `sequence` without repeats (each point kept at its lowest index, the others
+/// listed in out.duplicates), the bootstrap four (by `rule`) first, the rest in their order. Works
+/// in `sequence`'s own array.
+std::vector<std::uint32_t> engine_keys(const PointSet& input,
+                                       std::vector<std::uint32_t> sequence,
+                                       BootstrapRule rule,
+                                       Triangulation& out,
+                                       unsigned threads) {
+    const bool has_implicit = !input.exact.empty();
+    const auto implicit = [&](std::uint32_t i) {
+        return has_implicit && !std::holds_alternative<Point3>(input.exact[i]);
+    };
+    {
+        auto first = first_occurrences(input.points, input.weights, threads);
+        if (has_implicit) {
+            // An implicit point's rounding may equal another point's coordinates, but the point
+            // does not: neither repeats the other.
+            for (std::uint32_t i = 0; i < first.size(); ++i) {
+                if (implicit(i) || implicit(first[i])) {
+                    first[i] = i;
+                }
+            }
+        }
+        std::erase_if(sequence, [&](std::uint32_t i) { return first[i] != i; });
+        for (std::uint32_t i = 0; i < first.size(); ++i) {
+            if (first[i] != i) {
+                out.duplicates.push_back({i, first[i]});
+            }
+        }
+    }
+    // The repeat detection's arrays (8 to 12 bytes per point) are gone; their pages would
+    // otherwise stay resident under the storage.
+    release_free_heap();
+    // The bootstrap tetrahedron is chosen on coordinates, so only among explicit points: the
+    // implicit ones go last.
+    const auto explicit_end = std::stable_partition(
+        sequence.begin(), sequence.end(), [&](std::uint32_t i) { return !implicit(i); });
+    const auto boot = find_bootstrap(
+        input.points,
+        std::span<const std::uint32_t>(sequence.data(),
+                                       static_cast<std::size_t>(explicit_end - sequence.begin())),
+        rule);
+    // Move the bootstrap four to the front, keeping the relative order of the rest: the rest
+    // shift towards the back, from the back, so that no entry is overwritten before it is read.
+    std::array<std::uint32_t, 4> front{};
+    for (std::size_t j = 0; j < 4; ++j) {
+        front[j] = sequence[boot[j]];
+    }
+    std::size_t write = sequence.size();
+    for (std::size_t k = sequence.size(); k-- > 0;) {
+        if (std::find(boot.begin(), boot.end(), k) == boot.end()) {
+            sequence[--write] = sequence[k];
+        }
+    }
+    std::copy(front.begin(), front.end(), sequence.begin());
+    return sequence;
+}
+
+/// Marks point i; true when it was marked already.
+bool test_and_set(std::vector<std::uint64_t>& marks, std::size_t i) {
+    const std::uint64_t bit = std::uint64_t{1} << (i & 63u);
+    const bool was = (marks[i >> 6] & bit) != 0;
+    marks[i >> 6] |= bit;
+    return was;
+}
+
+}  // namespace
+
 Prepared prepare(const PointSet& input,
                  std::span<const std::uint32_t> sequence,
                  BootstrapRule rule,
                  Triangulation& out,
                  unsigned threads) {
     check_input(input, sequence);
+    std::vector<std::uint32_t> seq = engine_keys(
+        input, std::vector<std::uint32_t>(sequence.begin(), sequence.end()), rule, out, threads);
     const bool has_implicit = !input.exact.empty();
-    const auto implicit = [&](std::uint32_t i) {
-        return has_implicit && !std::holds_alternative<Point3>(input.exact[i]);
-    };
-    auto first = first_occurrences(input.points, input.weights, threads);
-    if (has_implicit) {
-        // An implicit point's rounding may equal another point's coordinates, but the point does
-        // not: neither repeats the other.
-        for (std::uint32_t i = 0; i < first.size(); ++i) {
-            if (implicit(i) || implicit(first[i])) {
-                first[i] = i;
-            }
-        }
-    }
-    std::vector<std::uint32_t> order;
-    order.reserve(sequence.size());
-    for (std::uint32_t i : sequence) {
-        if (first[i] == i) {
-            order.push_back(i);
-        }
-    }
-    // The bootstrap tetrahedron is chosen on coordinates, so only among explicit points: the
-    // implicit ones go last.
-    const auto explicit_end = std::stable_partition(
-        order.begin(), order.end(), [&](std::uint32_t i) { return !implicit(i); });
-    for (std::uint32_t i = 0; i < first.size(); ++i) {
-        if (first[i] != i) {
-            out.duplicates.push_back({i, first[i]});
-        }
-    }
-    const auto boot =
-        find_bootstrap(input.points,
-                       std::span<const std::uint32_t>(
-                           order.data(), static_cast<std::size_t>(explicit_end - order.begin())),
-                       rule);
-    // Move the bootstrap four to the front, keeping the relative order of the rest.
-    std::vector<std::uint32_t> seq;
-    seq.reserve(order.size());
-    for (std::size_t k : boot) {
-        seq.push_back(order[k]);
-    }
-    for (std::size_t k = 0; k < order.size(); ++k) {
-        if (std::find(boot.begin(), boot.end(), k) == boot.end()) {
-            seq.push_back(order[k]);
-        }
-    }
     std::vector<Point3> points(seq.size());
     std::vector<double> weights(input.weighted() ? seq.size() : 0);
     std::vector<GenericPoint3> exact(has_implicit ? seq.size() : 0);
@@ -122,7 +152,86 @@ Prepared prepare(const PointSet& input,
             weights[r] = input.weights[seq[r]];
         }
     }
-    return {Geometry(std::move(points), std::move(seq), std::move(weights), std::move(exact))};
+    return {
+        Geometry(std::move(points), std::move(seq), std::move(weights), std::move(exact)), {}, {}};
+}
+
+Prepared prepare_in_place(PointSet& input,
+                          std::vector<std::uint32_t>&& sequence,
+                          BootstrapRule rule,
+                          Triangulation& out,
+                          unsigned threads) {
+    check_input(input, sequence);
+    std::vector<std::uint32_t> seq = engine_keys(input, std::move(sequence), rule, out, threads);
+    const bool has_implicit = !input.exact.empty();
+    std::vector<double> weights(input.weighted() ? seq.size() : 0);
+    std::vector<GenericPoint3> exact(has_implicit ? seq.size() : 0);
+    for (std::size_t r = 0; r < seq.size(); ++r) {
+        if (has_implicit) {
+            exact[r] = input.exact[seq[r]];
+        }
+        if (input.weighted()) {
+            weights[r] = input.weights[seq[r]];
+        }
+    }
+    // Everything that can fail is done: from here the points move, and only give_back returns
+    // them. Row r takes the point of input index seq[r], the repeats go after the keys in index
+    // order, and the permutation is applied cycle by cycle with one mark bit per point.
+    const std::size_t n = input.size();
+    const std::size_t m = seq.size();
+    std::vector<std::uint64_t> marks(n / 64 + 1, 0);
+    std::vector<Point3> repeats(n - m);
+    std::vector<Point3>& p = input.points;
+    const auto origin = [&](std::size_t j) {
+        return j < m ? std::size_t{seq[j]} : std::size_t{out.duplicates[j - m][0]};
+    };
+    for (std::size_t start = 0; start < n; ++start) {
+        if (test_and_set(marks, start)) {
+            continue;
+        }
+        const Point3 first = p[start];
+        std::size_t j = start;
+        for (std::size_t from = origin(j); from != start; from = origin(j)) {
+            p[j] = p[from];
+            test_and_set(marks, from);
+            j = from;
+        }
+        p[j] = first;
+    }
+    std::copy(p.begin() + static_cast<std::ptrdiff_t>(m), p.end(), repeats.begin());
+    p.resize(m);
+    return {Geometry(std::move(p), std::move(seq), std::move(weights), std::move(exact)),
+            std::move(repeats),
+            std::move(marks)};
+}
+
+void give_back(Prepared& prep, const Triangulation& out, PointSet& input) noexcept {
+    const std::size_t m = prep.geometry.size();
+    const std::size_t n = m + prep.repeats.size();
+    std::vector<Point3> p = std::move(prep.geometry).take_points();
+    // Within the array's capacity (it held all n points): no allocation.
+    p.resize(n);
+    std::copy(prep.repeats.begin(), prep.repeats.end(), p.begin() + static_cast<std::ptrdiff_t>(m));
+    std::fill(prep.marks.begin(), prep.marks.end(), 0);
+    const auto origin = [&](std::size_t j) {
+        return j < m ? std::size_t{prep.geometry.key(static_cast<VertexId>(j))}
+                     : std::size_t{out.duplicates[j - m][0]};
+    };
+    // The inverse of prepare_in_place's permutation: the point in row j goes to index origin(j).
+    for (std::size_t start = 0; start < n; ++start) {
+        if (test_and_set(prep.marks, start)) {
+            continue;
+        }
+        Point3 carried = p[start];
+        std::size_t j = start;
+        do {
+            const std::size_t to = origin(j);
+            std::swap(carried, p[to]);
+            test_and_set(prep.marks, to);
+            j = to;
+        } while (j != start);
+    }
+    input.points = std::move(p);
 }
 
 void merge_conflict_tally(const ConflictTally& tally, Counters& counters, bool counted) {

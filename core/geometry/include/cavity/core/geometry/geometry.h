@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -59,6 +60,10 @@ public:
     }
 
     std::uint32_t key(VertexId v) const { return keys_[v]; }
+
+    /// Hands the coordinates' array over, in vertex order, and leaves the geometry without
+    /// points (keys stay): how a batch run on lent points (triangulate_in_place) returns them.
+    std::vector<Point3> take_points() && { return std::move(points_); }
 
     bool weighted() const { return !weights_.empty(); }
 

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "cavity/core/delaunay/insertion_driver.h"
 #include "cavity/core/delaunay/triangulate.h"
@@ -34,6 +35,16 @@ Triangulation triangulate_in_parallel(const PointSet& points,
 Triangulation triangulate(const PointSet& points,
                           std::span<const std::uint32_t> sequence,
                           const TriangulateOptions& options);
+
+/// As triangulate(), for a caller that lends its points and gives up its sequence: the engine
+/// lays the coordinates out in insertion order in `points.points`' own array and makes its keys in
+/// `sequence`'s, instead of copying both (28 bytes per point less at the peak: 24 for a point,
+/// 4 for its key), and puts the points back in input order, bit for bit, before it returns, also
+/// when it throws. Only `points.points` moves meanwhile; the same checks, errors and tetrahedra
+/// as triangulate().
+Triangulation triangulate_in_place(PointSet& points,
+                                   std::vector<std::uint32_t>&& sequence,
+                                   const TriangulateOptions& options);
 
 /// As triangulate(), reporting to `observer` (a NullObserver or CountingObserver, or a type
 /// derived from one): the engine is instantiated for it, so its hooks (observer.h) are called

@@ -76,7 +76,9 @@ public:
             if (alive(static_cast<TetId>(t))) {
                 emit(records_[t].v);
             }
-            if ((t & 0xFFFFu) == 0xFFFFu) {
+            // Every 4096 records (128 KiB): the copy written before a release adds to the peak,
+            // and with 65536 it added 1 MiB at 10^6 points (0.4% of the storage).
+            if ((t & 0xFFFu) == 0xFFFu) {
                 releaser.release_before(reinterpret_cast<unsigned char*>(records_.data() + t + 1));
             }
         }
