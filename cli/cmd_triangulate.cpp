@@ -115,9 +115,9 @@ void write_stats(core::AtomicFileGroup& files,
     json.string("bootstrap", args.bootstrap);
     json.integer("seed", args.seed);
     json.begin_object("timings");
-    // --stats runs the instrumented engine (about 10 % slower than the plain one a run without
-    // --stats uses), with the exact conflict counter on top for --count-conflicts: timings from
-    // here are that engine's.
+    // --stats runs the counting engine (the plain engine's cascade plus its counters: within
+    // about 1 % of the plain engine's instructions at 10^5 points), with the exact conflict
+    // counter on top for --count-conflicts: timings from here are that engine's.
     // --threads runs the parallel construction, which has no counters.
     json.string("engine",
                 args.threads > 0       ? "parallel, " + std::to_string(args.threads) + " threads"

@@ -32,7 +32,8 @@ print("point", x[0], "in tetrahedron", s[0], "with barycentric coordinates", wei
 # ... and cavity's own: the exact validator and the work the run did.
 assert tri.check()
 print("tetrahedra created:", tri.stats["tets_created"],
-      "| insphere calls settled by the filter:", tri.stats["stage_calls"]["insphere"]["filter"],
+      "| insphere calls settled by the static and semi-static filters:",
+      tri.stats["stage_calls"]["insphere"]["static"], tri.stats["stage_calls"]["insphere"]["filter"],
       "| perturbations:", tri.stats["perturbations"])
 
 # Bad input is a ValueError naming the row.

@@ -2,15 +2,18 @@
 // eight corners are cospherical), check the result exactly, and print a summary. Exits non-zero
 // if anything is wrong, so CI can run it.
 
+#include <cstddef>
 #include <cstdio>
 #include <exception>
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/check/orientation.h"
 #include "cavity/core/check/validate.h"
+#include "cavity/core/geometry/counters.h"
 #include "cavity/core/input/point_set.h"
 #include "cavity/core/live/triangulate.h"
 #include "cavity/core/order/insertion_order.h"
+#include "cavity/predicates/stage.h"
 
 int main() {
     namespace core = cavity::core;
@@ -42,9 +45,20 @@ int main() {
                     mesh.hull_triangles,
                     not_positive,
                     report.ok() ? "valid" : "INVALID");
-        std::printf("work: %llu tetrahedra created, %llu insphere calls decided by the filter\n",
-                    static_cast<unsigned long long>(mesh.counters.tets_created),
-                    static_cast<unsigned long long>(mesh.counters.stage_calls[1][0]));
+        // Calls decided by the floating-point filters: the static one, then the semi-static one.
+        const auto& insphere =
+            mesh.counters.stage_calls[static_cast<std::size_t>(core::PredicateKind::kInsphere)];
+        const auto decided = [&](cavity::predicates::Stage s) {
+            return static_cast<unsigned long long>(insphere[static_cast<std::size_t>(s)]);
+        };
+        std::printf(
+            "work: %llu tetrahedra created, %llu insphere calls decided by the filters "
+            "(%llu static, %llu semi-static)\n",
+            static_cast<unsigned long long>(mesh.counters.tets_created),
+            decided(cavity::predicates::Stage::kStatic) +
+                decided(cavity::predicates::Stage::kFilter),
+            decided(cavity::predicates::Stage::kStatic),
+            decided(cavity::predicates::Stage::kFilter));
         return report.ok() && not_positive == 0 ? 0 : 1;
     } catch (const core::Error& e) {
         std::fprintf(stderr, "tetrahedralize: %s\n", e.what());

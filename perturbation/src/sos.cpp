@@ -95,6 +95,16 @@ Sign sos_tie(const Point3& a,
     return resolve_zero(std::array<Point3, 5>{a, b, c, d, e}, keys).sign;
 }
 
+SosTie sos_tie_counted(const Point3& a,
+                       const Point3& b,
+                       const Point3& c,
+                       const Point3& d,
+                       const Point3& e,
+                       const Keys5& keys) {
+    const Resolution r = resolve_zero(std::array<Point3, 5>{a, b, c, d, e}, keys);
+    return {r.sign, r.cofactors};
+}
+
 }  // namespace detail
 
 SosVerdict orient4d_sos_staged(const WeightedPoint3& a,

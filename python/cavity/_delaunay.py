@@ -71,7 +71,8 @@ class Delaunay:
     storage : {"array", "hash"}, optional
         Array storage, or the book's face hash table (not with ``incremental``).
     count : bool, optional
-        Run the instrumented engine and put its counters in ``stats`` (about 10% slower).
+        Run the counting engine and put its counters in ``stats`` (within about 1% of the plain
+        engine's instructions).
     threads : int, optional
         0 (default): the sequential engine. N >= 1: the parallel construction on N threads (walk
         and array storage only, no ``count``). The simplices are the same as the sequential

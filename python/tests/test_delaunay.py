@@ -50,7 +50,13 @@ def test_stats_hold_the_counters_and_timings(rng):
     assert st["tets"] == d.nsimplex
     assert st["tets_created"] - st["tets_deleted"] == d.nsimplex
     assert st["walk_steps"] > 0 and st["dig_tests"] > 0
-    assert st["stage_calls"]["insphere"]["filter"] > 0
+    # The static filter decides most in-sphere tests of uniform points; every stage is a key.
+    insphere = st["stage_calls"]["insphere"]
+    assert set(insphere) == {"static", "filter", "adaptive", "exact"}
+    assert insphere["static"] > 0
+    # Each conflict test makes one in-sphere call (solid) or at least one orient3d call (ghost).
+    calls = st["stage_calls"]
+    assert sum(calls["insphere"].values()) + sum(calls["orient3d"].values()) >= st["dig_tests"]
     assert set(st["timings"]) == {"order_s", "triangulate_s", "adjacency_s", "order_cpu_s",
                                   "triangulate_cpu_s", "adjacency_cpu_s"}
     assert all(t >= 0 for t in st["timings"].values())

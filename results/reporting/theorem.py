@@ -272,7 +272,10 @@ def theorem_section(inp, paper=None):
                 cells.append(interval(m, lo, hi, digits) if len(v) > 1 else fmt(m, digits))
             at_n = [r for r in mine if int(r["points"]) == n]
             beyond = sum(float(r["insphere_adaptive"]) + float(r["insphere_exact"]) for r in at_n)
-            calls = sum(float(r["insphere_filter"]) for r in at_n)
+            # Files written before the static stage was counted have no insphere_static column
+            # (their filter column holds what it decides).
+            calls = sum(float(r["insphere_filter"]) + float(r.get("insphere_static", 0))
+                        for r in at_n)
             cells.append(("0" if beyond == 0 else f"{beyond / calls:.1e}") if calls else "-")
             out.append(f"| {dist} | {n} | {len(by['created'][n])} | " + " | ".join(cells) + " |")
             if n == ns[-1]:

@@ -51,6 +51,8 @@ awk 'NR>1 && !/^#/ {for (i=2;i<=5;i++) if ($i<1 || $i>5) bad=1} END {exit bad}' 
 grep -q '"duplicates": 1' dup.json || fail "dup: stats lack the duplicate count"
 grep -q '"triangulate_s"' dup.json || fail "dup: stats lack timings"
 grep -q '"engine": "counting"' dup.json || fail "dup: stats do not name the engine"
+# Every predicate's calls by deciding stage, the static filter's among them.
+[ "$(grep -c '"static": ' dup.json)" = 4 ] || fail "dup: predicate_stages lack the static stage"
 "$cavity" check dup.node dup.ele --quiet || fail "check rejects a valid mesh"
 
 # cavity check catches a flipped tetrahedron and a missing one.

@@ -92,6 +92,15 @@ bool Geometry::tie_breaks_into(const TetVertices& t, VertexId u) const {
                point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys) == Sign::kPos;
 }
 
+bool Geometry::tie_breaks_into(const TetVertices& t, VertexId u, Counters& tally) const {
+    const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
+    const perturbation::detail::SosTie tie = perturbation::detail::sos_tie_counted(
+        point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys);
+    ++tally.perturbations;
+    tally.perturbation_cofactors += tie.cofactors;
+    return tie.sign == Sign::kPos;
+}
+
 template <Tally T>
 bool Geometry::conflicts_solid_exactly(const TetVertices& t, VertexId u, T& tally) const {
     const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
@@ -101,17 +110,8 @@ bool Geometry::conflicts_solid_exactly(const TetVertices& t, VertexId u, T& tall
         count(v, PredicateKind::kInsphere, tally);
         return v.sign == Sign::kPos;
     }
-    if (!weighted()) {
-        if constexpr (!T::kCounting) {
-            return perturbation::insphere_sos(
-                       point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys) ==
-                   Sign::kPos;
-        }
-        const auto v = perturbation::insphere_sos_staged(
-            point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys);
-        count(v, PredicateKind::kInsphere, tally);
-        return v.sign == Sign::kPos;
-    }
+    // Neither implicit nor weighted is plain_, which conflicts_solid decides inline.
+    CAVITY_ASSERT(weighted(), "conflicts_solid decides unweighted explicit points inline");
     const auto a = weighted_point(t[0]), b = weighted_point(t[1]), c = weighted_point(t[2]),
                d = weighted_point(t[3]), e = weighted_point(u);
     if constexpr (!T::kCounting) {

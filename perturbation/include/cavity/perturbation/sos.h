@@ -68,6 +68,20 @@ Sign sos_tie(const Point3& a,
              const Point3& e,
              const Keys5& keys);
 
+/// A tie's sign and the number of cofactors that decided it (what the engine's counters record).
+struct SosTie {
+    Sign sign;
+    std::uint8_t cofactors;
+};
+
+/// sos_tie, with the cofactors it evaluated.
+SosTie sos_tie_counted(const Point3& a,
+                       const Point3& b,
+                       const Point3& c,
+                       const Point3& d,
+                       const Point3& e,
+                       const Keys5& keys);
+
 }  // namespace detail
 
 /// insphere under the perturbation: kPos when e is inside the perturbed circumball of a, b, c, d

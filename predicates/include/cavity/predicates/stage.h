@@ -7,8 +7,16 @@
 
 namespace cavity::predicates {
 
-/// The stage of the evaluation pipeline that decided a predicate's sign.
-///  - kFilter:   the floating-point determinant with a certified error bound (inputs in range);
+/// The stage of the evaluation pipeline that decided a predicate's sign, in the order they run.
+///  - kStatic:   the static filter (insphere_static_filter.h, orient3d_static_filter.h): the
+///               floating-point determinant under one error bound fixed by the bounding box of
+///               all the points. Only the engine's tests run it, for points known to lie in that
+///               box; a predicate called alone starts at kFilter. Its bound is never below the
+///               filter's for the same query, so what it decides the filter would decide too
+///               (but for the filter's underflow guard), and the adaptive and exact counts are
+///               the same with it or without it;
+///  - kFilter:   the floating-point determinant with a certified error bound computed from the
+///               query's own points (semi-static; inputs in range);
 ///  - kAdaptive: for insphere with exact differences first the plain determinant under a bound
 ///               proportional to its permanent (Shewchuk's stage A); then
 ///               the determinant of the exact differences (rounded + tail) in double-double
@@ -18,12 +26,14 @@ namespace cavity::predicates {
 ///               terms of the difference tails in doubles, under a certified bound;
 ///  - kExact:    the exact determinant: expansions of the two-component differences, or GMP
 ///               integers for inputs whose exponents spread too wide for expansions.
-enum class Stage : std::uint8_t { kFilter = 0, kAdaptive = 1, kExact = 2 };
+enum class Stage : std::uint8_t { kStatic = 0, kFilter = 1, kAdaptive = 2, kExact = 3 };
 
-inline constexpr int kStageCount = 3;
+inline constexpr int kStageCount = 4;
 
 constexpr std::string_view stage_name(Stage s) {
     switch (s) {
+        case Stage::kStatic:
+            return "static";
         case Stage::kFilter:
             return "filter";
         case Stage::kAdaptive:

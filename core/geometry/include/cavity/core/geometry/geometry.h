@@ -155,22 +155,23 @@ public:
     }
 
     /// orient3d of four points the caller knows to lie in the bounding box (in_box), as the
-    /// walks' tests do: the static filter first when uncounted (one comparison decides most
-    /// tests), so the counters' stages stay those of the predicates, as in conflicts_solid.
+    /// walks' tests do: the static filter first (one comparison decides most tests), counted as
+    /// the static stage, so the counting engine runs the plain engine's cascade.
     template <Tally T>
     [[gnu::always_inline]] Sign orient3d_in_box(
         const Point3& a, const Point3& b, const Point3& c, const Point3& d, T& tally) const {
-        if constexpr (!T::kCounting) {
-            if (const int s = orient3d_static_.sign(a, b, c, d)) {
-                return s > 0 ? Sign::kPos : Sign::kNeg;
+        if (const int s = orient3d_static_.sign(a, b, c, d)) {
+            if constexpr (T::kCounting) {
+                tally.count_predicate(PredicateKind::kOrient3d, predicates::Stage::kStatic);
             }
+            return s > 0 ? Sign::kPos : Sign::kNeg;
         }
         return orient3d(a, b, c, d, tally);
     }
 
     /// True when u is in the perturbed open circumball (weighted: below the perturbed witness
-    /// plane) of the solid tetrahedron t. The common case (unweighted, uncounted, not a tie) is
-    /// inline; the perturbation keys are read only on an exact tie.
+    /// plane) of the solid tetrahedron t. The common case (unweighted, not a tie) is inline,
+    /// counted or not; the perturbation keys are read only on an exact tie.
     [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t, VertexId u) const {
         Uncounted none;
         return conflicts_solid(t, u, none);
@@ -178,12 +179,27 @@ public:
 
     template <Tally T>
     [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t, VertexId u, T& tally) const {
-        if constexpr (!T::kCounting) {
+        if constexpr (T::kCounting) {
+            // The plain engine's cascade below, counting the stage that decided: the static
+            // filter, then the staged predicate inline (its filter shares the static filter's
+            // determinant, as in the plain engine), then the tie-break.
+            if (plain_) {
+                if (const int s = insphere_static_.sign(
+                        point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u))) {
+                    tally.count_predicate(PredicateKind::kInsphere, predicates::Stage::kStatic);
+                    return s > 0;
+                }
+                const predicates::Verdict exact = predicates::insphere_staged(
+                    point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
+                tally.count_predicate(PredicateKind::kInsphere, exact.stage);
+                return exact.sign != Sign::kZero ? exact.sign == Sign::kPos
+                                                 : tie_breaks_into(t, u, tally);
+            }
+        } else {
             if (plain_) {
                 // The static filter first: most tests of a well-spread point set are decided by
-                // one comparison with the bounding box's bound. It runs only uncounted, so the
-                // counters' stages stay those of the predicates themselves. It is sound only for
-                // the points in its box, which implicit points are not (plain_ is false then).
+                // one comparison with the bounding box's bound. It is sound only for the points
+                // in its box, which implicit points are not (plain_ is false then).
                 if (const int s = insphere_static_.sign(
                         point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u))) {
                     return s > 0;
@@ -233,6 +249,8 @@ private:
     /// The perturbed in-sphere test of u against solid t when the exact one is zero (out of
     /// line: rare, and kept off the inlined fast path).
     bool tie_breaks_into(const TetVertices& t, VertexId u) const;
+    /// The same, counting the tie-break and its cofactors.
+    bool tie_breaks_into(const TetVertices& t, VertexId u, Counters& tally) const;
     /// orient3d on the exact points (out of line: only geometries with implicit points call it).
     predicates::Verdict orient3d_generic(VertexId a, VertexId b, VertexId c, VertexId d) const;
     template <Tally T>
