@@ -11,6 +11,7 @@
 #include "cavity/predicates/generic_point.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/insphere_static_filter.h"
+#include "cavity/predicates/lattice.h"
 #include "cavity/predicates/orient3d.h"
 #include "cavity/predicates/orient3d_static_filter.h"
 #include "cavity/predicates/point.h"
@@ -35,6 +36,13 @@ using predicates::WeightedPoint3;
 /// predicates, so no exact decision sees a rounded coordinate; point(v) stays the rounded point,
 /// for what needs no exactness (walks, boxes, output). Without implicit points `exact` is empty
 /// and the tests are the plain ones, behind one well-predicted branch.
+///
+/// Lattices. When every point is an integer point and the points span at most
+/// predicates::kLatticeMaxSpan along each axis (a grid: detected at construction and kept up to
+/// date by the appends), the plain double determinants are exact (predicates/lattice.h). The
+/// uncounted tests then take the sign of the plain determinant and, on a zero, go straight to the
+/// tie-break, whose cofactors are plain determinants too: no filter bound, no adaptive stage. The
+/// counted tests keep the staged route, so the counters' stages stay those of the predicates.
 class Geometry {
 public:
     Geometry(std::vector<Point3> points,
@@ -61,6 +69,10 @@ public:
     std::uint32_t key(VertexId v) const { return keys_[v]; }
 
     bool weighted() const { return !weights_.empty(); }
+
+    /// True when the points form an exact lattice (see the top): the uncounted tests then use
+    /// the plain determinants.
+    bool lattice() const { return lattice_; }
 
     std::size_t size() const { return points_.size(); }
 
@@ -107,6 +119,11 @@ public:
 
     template <Tally T>
     Sign orient3d(VertexId a, VertexId b, VertexId c, VertexId d, T& tally) const {
+        if constexpr (!T::kCounting) {
+            if (lattice_) {
+                return predicates::orient3d_on_lattice(point(a), point(b), point(c), point(d));
+            }
+        }
         if (has_implicit()) [[unlikely]] {
             const auto verdict = orient3d_generic(a, b, c, d);
             if constexpr (T::kCounting) {
@@ -152,6 +169,13 @@ public:
             if (const int s = orient3d_static_.sign(a, b, c, d)) {
                 return s > 0 ? Sign::kPos : Sign::kNeg;
             }
+            // On a lattice, integer points in the box have an exact plain determinant; the
+            // walks' other points (the straight walk's source) need not be integer points and
+            // take the usual route.
+            if (lattice_ && predicates::is_integral(a) && predicates::is_integral(b) &&
+                predicates::is_integral(c) && predicates::is_integral(d)) {
+                return predicates::orient3d_on_lattice(a, b, c, d);
+            }
         }
         return orient3d(a, b, c, d, tally);
     }
@@ -175,6 +199,10 @@ public:
                 if (const int s = insphere_static_.sign(
                         point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u))) {
                     return s > 0;
+                }
+                if (lattice_) {
+                    // On a lattice the static filter is exact (its bound is 0): an exact tie.
+                    return tie_breaks_into(t, u);
                 }
                 const Sign exact = predicates::insphere(
                     point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
@@ -226,15 +254,19 @@ private:
     template <Tally T>
     bool conflicts_solid_exactly(const TetVertices& t, VertexId u, T& tally) const;
 
-    /// Grows the bounding box to hold p and remakes the static filter for it (the filter is sound
-    /// only for points in its box).
+    /// Grows the bounding box to hold p and remakes the static filters for it (the filters are
+    /// sound only for points in their box), and keeps lattice_ true only while p keeps the points
+    /// a lattice.
     void widen_box(const Point3& p);
+    /// The static filters for the current box (exact insphere on a lattice).
+    void make_static_filters();
 
     std::vector<Point3> points_;
     std::vector<std::uint32_t> keys_;
     std::vector<double> weights_;
     std::vector<GenericPoint3> exact_;  // empty, or one definition per point (see the top)
     bool plain_ = true;                 // unweighted and no implicit point: the inline fast path
+    bool lattice_ = false;              // plain_, integer points, exact lattice box (see the top)
     Point3 box_lo_{};                   // bounding box of points_, when there are any
     Point3 box_hi_{};
     predicates::InsphereStaticFilter insphere_static_;  // for points in that box
