@@ -82,6 +82,19 @@ predicates::Verdict Geometry::orient3d_generic(VertexId a,
     return predicates::orient3d_staged(exact_[a], exact_[b], exact_[c], exact_[d]);
 }
 
+Sign Geometry::orient3d_on_lattice_or_exact(const Point3& a,
+                                            const Point3& b,
+                                            const Point3& c,
+                                            const Point3& d) const {
+    // Integer points in the box have an exact plain determinant; the walks' other points (the
+    // straight walk's source) need not be integer points and take the exact predicate.
+    if (predicates::is_integral(a) & predicates::is_integral(b) & predicates::is_integral(c) &
+        predicates::is_integral(d)) {
+        return predicates::orient3d_on_lattice(a, b, c, d);
+    }
+    return predicates::orient3d(a, b, c, d);
+}
+
 Sign Geometry::orient3d(VertexId a, VertexId b, VertexId c, const GenericPoint3& d) const {
     return predicates::orient3d(generic(a), generic(b), generic(c), d);
 }

@@ -169,12 +169,8 @@ public:
             if (const int s = orient3d_static_.sign(a, b, c, d)) {
                 return s > 0 ? Sign::kPos : Sign::kNeg;
             }
-            // On a lattice, integer points in the box have an exact plain determinant; the
-            // walks' other points (the straight walk's source) need not be integer points and
-            // take the usual route.
-            if (lattice_ && predicates::is_integral(a) && predicates::is_integral(b) &&
-                predicates::is_integral(c) && predicates::is_integral(d)) {
-                return predicates::orient3d_on_lattice(a, b, c, d);
+            if (lattice_) {
+                return orient3d_on_lattice_or_exact(a, b, c, d);
             }
         }
         return orient3d(a, b, c, d, tally);
@@ -200,12 +196,11 @@ public:
                         point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u))) {
                     return s > 0;
                 }
-                if (lattice_) {
-                    // On a lattice the static filter is exact (its bound is 0): an exact tie.
-                    return tie_breaks_into(t, u);
-                }
-                const Sign exact = predicates::insphere(
-                    point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
+                // On a lattice the static filter is exact (its bound is 0): this is a tie.
+                const Sign exact =
+                    lattice_ ? Sign::kZero
+                             : predicates::insphere(
+                                   point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
                 // On an exact tie go straight to the tie-break: the exact determinant is already
                 // known to be zero, and evaluating it again costs about 12% of a 50^3 grid's run.
                 return exact != Sign::kZero ? exact == Sign::kPos : tie_breaks_into(t, u);
@@ -249,6 +244,12 @@ private:
     /// The perturbed in-sphere test of u against solid t when the exact one is zero (out of
     /// line: rare, and kept off the inlined fast path).
     bool tie_breaks_into(const TetVertices& t, VertexId u) const;
+    /// orient3d on a lattice geometry of four points in its box (out of line, to keep the walks'
+    /// inlined code as small as without lattices).
+    Sign orient3d_on_lattice_or_exact(const Point3& a,
+                                      const Point3& b,
+                                      const Point3& c,
+                                      const Point3& d) const;
     /// orient3d on the exact points (out of line: only geometries with implicit points call it).
     predicates::Verdict orient3d_generic(VertexId a, VertexId b, VertexId c, VertexId d) const;
     template <Tally T>
