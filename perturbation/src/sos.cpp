@@ -3,6 +3,7 @@
 #include "cascade.h"
 #include "cavity/predicates/generic_predicates.h"
 #include "cavity/predicates/insphere.h"
+#include "cavity/predicates/lattice.h"
 #include "cavity/predicates/orient3d.h"
 #include "cavity/predicates/orient4d.h"
 
@@ -27,19 +28,27 @@ namespace {
 /// most two when all five are cospherical (a line meets a sphere in at most two points).
 ///
 /// P is Point3 or GenericPoint3: the argument is the same for implicit points, whose orient3d is
-/// as exact as that of doubles.
-template <class P>
-Resolution resolve_zero(const std::array<P, 5>& p, const Keys5& keys) {
+/// as exact as that of doubles. `orient3d` is an exact orient3d of four P.
+template <class P, class Orient3d>
+Resolution resolve_zero(const std::array<P, 5>& p, const Keys5& keys, Orient3d orient3d) {
     std::uint8_t cofactors = 0;
     for (const std::uint8_t i : key_order(keys)) {
         const std::array<P, 4> others = other_rows(p, i);
         ++cofactors;
-        const Sign minor = predicates::orient3d(others[0], others[1], others[2], others[3]);
+        const Sign minor = orient3d(others[0], others[1], others[2], others[3]);
         if (minor != Sign::kZero) {
             return {i % 2 == 0 ? minor : negate(minor), cofactors};
         }
     }
     return {Sign::kZero, cofactors};
+}
+
+/// The exact orient3d of the predicates layer, for any point kind.
+template <class P>
+Resolution resolve_zero(const std::array<P, 5>& p, const Keys5& keys) {
+    return resolve_zero(p, keys, [](const P& a, const P& b, const P& c, const P& d) {
+        return predicates::orient3d(a, b, c, d);
+    });
 }
 
 }  // namespace
@@ -103,6 +112,20 @@ SosTie sos_tie_counted(const Point3& a,
                        const Keys5& keys) {
     const Resolution r = resolve_zero(std::array<Point3, 5>{a, b, c, d, e}, keys);
     return {r.sign, r.cofactors};
+}
+
+Sign sos_tie_on_lattice(const Point3& a,
+                        const Point3& b,
+                        const Point3& c,
+                        const Point3& d,
+                        const Point3& e,
+                        const Keys5& keys) {
+    return resolve_zero(std::array<Point3, 5>{a, b, c, d, e},
+                        keys,
+                        [](const Point3& p, const Point3& q, const Point3& r, const Point3& s) {
+                            return predicates::orient3d_on_lattice(p, q, r, s);
+                        })
+        .sign;
 }
 
 }  // namespace detail

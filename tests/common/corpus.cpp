@@ -112,6 +112,10 @@ std::vector<CorpusCase> degenerate_corpus() {
     corpus.push_back({"cospherical_1e300", scaled(generated("cospherical", 60), 1e300), -1});
     corpus.push_back({"grid_offset", offset(generated("grid", 64), 1e9), -1});
     corpus.push_back({"grid_offset_1e15", offset(generated("grid", 64), 1e15), 6LL * 3 * 3 * 3});
+    // Integer grids at the largest span for which the plain determinants are exact (715 along
+    // each axis, predicates/lattice.h) and just beyond it, where the engine must not use them.
+    corpus.push_back({"grid_span_715", scaled(generated("grid", 216), 143), 6LL * 5 * 5 * 5});
+    corpus.push_back({"grid_span_720", scaled(generated("grid", 216), 144), 6LL * 5 * 5 * 5});
     corpus.push_back({"mixed_magnitudes", mixed_magnitudes(100), -1});
     corpus.push_back({"moment", generated("moment", 20), (20LL - 2) * (20 - 3) / 2});
     corpus.push_back({"skew_lines", generated("skew-lines", 30), 14LL * 14});

@@ -167,6 +167,37 @@ TEST(InsphereSos, MatchesOracleOnGridPoints) {
     EXPECT_GT(tally.depths[0], 500);
 }
 
+// The lattice tie-break (plain cofactors, for grids) against the oracle on every exact tie among
+// random tuples of a coarse grid spanning the lattice bound (715, predicates/lattice.h), where the
+// cofactors' intermediates are largest.
+TEST(InsphereSos, LatticeTieBreakMatchesOracle) {
+    std::mt19937_64 rng(kSeed + 9);
+    std::vector<Point3> points = grid(0, 5);
+    for (Point3& q : points) {
+        q = {143 * q.x, 143 * q.y, 143 * q.z};
+    }
+    int ties = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const auto i = distinct_indices<5>(rng, points.size());
+        const Point3 &a = points[i[0]], &b = points[i[1]], &c = points[i[2]], &d = points[i[3]],
+                     &e = points[i[4]];
+        if (symbolic_orient3d(a, b, c, d) == Sign::kZero ||
+            predicates::insphere(a, b, c, d, e) != Sign::kZero) {
+            continue;  // only exact ties of non-flat tetrahedra reach the tie-break
+        }
+        ++ties;
+        const Keys5 keys = distinct_keys<5>(rng, kKeyBound);
+        const Points5 p{test::unweighted(a),
+                        test::unweighted(b),
+                        test::unweighted(c),
+                        test::unweighted(d),
+                        test::unweighted(e)};
+        ASSERT_EQ(detail::sos_tie_on_lattice(a, b, c, d, e, keys), symbolic_lifted(p, keys))
+            << describe(p, keys);
+    }
+    EXPECT_GT(ties, 100);
+}
+
 TEST(Orient4dSos, MatchesOracleOnCohyperplanarLifts) {
     std::mt19937_64 rng(kSeed + 3);
     const std::vector<Point3> points = grid(-1, 1);

@@ -29,7 +29,18 @@ Geometry::Geometry(std::vector<Point3> points,
         box_lo_ = {std::min(box_lo_.x, p.x), std::min(box_lo_.y, p.y), std::min(box_lo_.z, p.z)};
         box_hi_ = {std::max(box_hi_.x, p.x), std::max(box_hi_.y, p.y), std::max(box_hi_.z, p.z)};
     }
-    insphere_static_ = predicates::InsphereStaticFilter(box_lo_, box_hi_);
+    // The box first: it rejects most non-lattice inputs before any point is looked at again, and
+    // the integer scan stops at the first fractional coordinate.
+    lattice_ = plain_ && predicates::is_lattice_box(box_lo_, box_hi_) &&
+               std::all_of(points_.begin(), points_.end(), [](const Point3& p) {
+                   return predicates::is_integral(p);
+               });
+    make_static_filters();
+}
+
+void Geometry::make_static_filters() {
+    insphere_static_ = lattice_ ? predicates::InsphereStaticFilter::exact()
+                                : predicates::InsphereStaticFilter(box_lo_, box_hi_);
     orient3d_static_ = predicates::Orient3dStaticFilter(box_lo_, box_hi_);
 }
 
@@ -55,8 +66,12 @@ void Geometry::widen_box(const Point3& p) {
     }
     box_lo_ = {std::min(box_lo_.x, p.x), std::min(box_lo_.y, p.y), std::min(box_lo_.z, p.z)};
     box_hi_ = {std::max(box_hi_.x, p.x), std::max(box_hi_.y, p.y), std::max(box_hi_.z, p.z)};
-    insphere_static_ = predicates::InsphereStaticFilter(box_lo_, box_hi_);
-    orient3d_static_ = predicates::Orient3dStaticFilter(box_lo_, box_hi_);
+    if (points_.size() == 1) {
+        lattice_ = plain_;  // the empty set was vacuously a lattice
+    }
+    lattice_ =
+        lattice_ && predicates::is_integral(p) && predicates::is_lattice_box(box_lo_, box_hi_);
+    make_static_filters();
 }
 
 namespace {
@@ -82,12 +97,30 @@ predicates::Verdict Geometry::orient3d_generic(VertexId a,
     return predicates::orient3d_staged(exact_[a], exact_[b], exact_[c], exact_[d]);
 }
 
+Sign Geometry::orient3d_on_lattice_or_exact(const Point3& a,
+                                            const Point3& b,
+                                            const Point3& c,
+                                            const Point3& d) const {
+    // Integer points in the box have an exact plain determinant; the walks' other points (the
+    // straight walk's source) need not be integer points and take the exact predicate.
+    if (predicates::is_integral(a) & predicates::is_integral(b) & predicates::is_integral(c) &
+        predicates::is_integral(d)) {
+        return predicates::orient3d_on_lattice(a, b, c, d);
+    }
+    return predicates::orient3d(a, b, c, d);
+}
+
 Sign Geometry::orient3d(VertexId a, VertexId b, VertexId c, const GenericPoint3& d) const {
     return predicates::orient3d(generic(a), generic(b), generic(c), d);
 }
 
 bool Geometry::tie_breaks_into(const TetVertices& t, VertexId u) const {
     const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
+    if (lattice_) {
+        return perturbation::detail::sos_tie_on_lattice(
+                   point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys) ==
+               Sign::kPos;
+    }
     return perturbation::detail::sos_tie(
                point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u), keys) == Sign::kPos;
 }

@@ -67,6 +67,35 @@ TEST_P(Variants, ValidAndIdenticalForEveryOrderLocatorAndStorage) {
     }
 }
 
+// The uncounted engine takes the fast routes (static filters; on integer grids the plain
+// determinants and the lattice tie-break, geometry.h) while the counting engine keeps the staged
+// predicates: both must build the same tetrahedra in every variant.
+TEST_P(Variants, UncountedEngineMatchesTheCountingOne) {
+    const CorpusCase& c = GetParam();
+    const auto reference_sequence =
+        core::make_insertion_order(c.points.points, core::OrderOptions{}).sequence;
+    core::TriangulateOptions counted;
+    counted.count = true;
+    const auto reference = canonical(core::triangulate(c.points, reference_sequence, counted).tets);
+    for (const auto& [order_name, order, order_help] : core::kOrderKinds) {
+        for (const auto& [locate_name, locate, locate_help] : core::kLocateKinds) {
+            for (const auto& [storage_name, storage, storage_help] : core::kStorageKinds) {
+                core::OrderOptions order_options;
+                order_options.kind = order;
+                order_options.seed = 5;
+                const auto sequence =
+                    core::make_insertion_order(c.points.points, order_options).sequence;
+                core::TriangulateOptions options;
+                options.locate = locate;
+                options.storage = storage;
+                EXPECT_EQ(canonical(core::triangulate(c.points, sequence, options).tets), reference)
+                    << c.name << " order " << order_name << " locate " << locate_name << " storage "
+                    << storage_name << ": a different triangulation";
+            }
+        }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(DegenerateCorpus,
                          Variants,
                          ::testing::ValuesIn(degenerate_corpus()),

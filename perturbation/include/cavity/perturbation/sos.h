@@ -82,6 +82,15 @@ SosTie sos_tie_counted(const Point3& a,
                        const Point3& e,
                        const Keys5& keys);
 
+/// sos_tie for integer points of an exact lattice box (predicates/lattice.h, an unchecked
+/// precondition): each cofactor is then the plain orient3d determinant, exact as it stands.
+Sign sos_tie_on_lattice(const Point3& a,
+                        const Point3& b,
+                        const Point3& c,
+                        const Point3& d,
+                        const Point3& e,
+                        const Keys5& keys);
+
 }  // namespace detail
 
 /// insphere under the perturbation: kPos when e is inside the perturbed circumball of a, b, c, d

@@ -16,7 +16,7 @@ Verdict insphere_slow(
 }  // namespace detail
 
 /// insphere, also reporting the stage that decided.
-inline Verdict insphere_staged(
+[[gnu::always_inline]] inline Verdict insphere_staged(
     const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
     if (const int s = detail::insphere_filter(a, b, c, d, e)) {
         return {static_cast<Sign>(s), Stage::kFilter};
@@ -27,7 +27,7 @@ inline Verdict insphere_staged(
 /// Sign of det[p-e, |p-e|^2] over the rows p = a, b, c, d: kPos when e lies inside the circumball
 /// of a, b, c, d if they are positively oriented (the sign flips when they are negatively
 /// oriented). Exact for every finite double input.
-inline Sign insphere(
+[[gnu::always_inline]] inline Sign insphere(
     const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
     return insphere_staged(a, b, c, d, e).sign;
 }

@@ -48,6 +48,14 @@ public:
         }
     }
 
+    /// For points where the plain determinant is exact (integer points of an exact lattice box,
+    /// lattice.h): the bound is 0, so only an exact zero is left undecided.
+    static InsphereStaticFilter exact() {
+        InsphereStaticFilter filter;
+        filter.bound_ = 0.0;
+        return filter;
+    }
+
     /// +1 or -1 when the sign of det[p-e, |p-e|^2] (p = a..d) is certified, 0 when undecided.
     /// Every point must lie in the box the filter was made for.
     [[gnu::always_inline]] int sign(

@@ -66,7 +66,7 @@ inline constexpr double kInsphereMaxMax = 0x1p190;
 }
 
 /// +1 or -1 when the sign of det[p-e, |p-e|^2] (p = a..d) is certified, 0 when undecided.
-inline int insphere_filter(
+[[gnu::always_inline]] inline int insphere_filter(
     const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
     const double aex = a.x - e.x;
     const double aey = a.y - e.y;

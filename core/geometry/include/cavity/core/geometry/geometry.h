@@ -12,6 +12,7 @@
 #include "cavity/predicates/generic_point.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/insphere_static_filter.h"
+#include "cavity/predicates/lattice.h"
 #include "cavity/predicates/orient3d.h"
 #include "cavity/predicates/orient3d_static_filter.h"
 #include "cavity/predicates/point.h"
@@ -36,6 +37,13 @@ using predicates::WeightedPoint3;
 /// predicates, so no exact decision sees a rounded coordinate; point(v) stays the rounded point,
 /// for what needs no exactness (walks, boxes, output). Without implicit points `exact` is empty
 /// and the tests are the plain ones, behind one well-predicted branch.
+///
+/// Lattices. When every point is an integer point and the points span at most
+/// predicates::kLatticeMaxSpan along each axis (a grid: detected at construction and kept up to
+/// date by the appends), the plain double determinants are exact (predicates/lattice.h). The
+/// uncounted tests then take the sign of the plain determinant and, on a zero, go straight to the
+/// tie-break, whose cofactors are plain determinants too: no filter bound, no adaptive stage. The
+/// counted tests keep the staged route, so the counters' stages stay those of the predicates.
 class Geometry {
 public:
     Geometry(std::vector<Point3> points,
@@ -66,6 +74,10 @@ public:
     std::vector<Point3> take_points() && { return std::move(points_); }
 
     bool weighted() const { return !weights_.empty(); }
+
+    /// True when the points form an exact lattice (see the top): the uncounted tests then use
+    /// the plain determinants.
+    bool lattice() const { return lattice_; }
 
     std::size_t size() const { return points_.size(); }
 
@@ -119,6 +131,11 @@ public:
 
     template <Tally T>
     Sign orient3d(VertexId a, VertexId b, VertexId c, VertexId d, T& tally) const {
+        if constexpr (!T::kCounting) {
+            if (lattice_) {
+                return predicates::orient3d_on_lattice(point(a), point(b), point(c), point(d));
+            }
+        }
         if (has_implicit()) [[unlikely]] {
             const auto verdict = orient3d_generic(a, b, c, d);
             if constexpr (T::kCounting) {
@@ -166,6 +183,11 @@ public:
             }
             return s > 0 ? Sign::kPos : Sign::kNeg;
         }
+        if constexpr (!T::kCounting) {
+            if (lattice_) {
+                return orient3d_on_lattice_or_exact(a, b, c, d);
+            }
+        }
         return orient3d(a, b, c, d, tally);
     }
 
@@ -189,6 +211,11 @@ public:
                     tally.count_predicate(PredicateKind::kInsphere, predicates::Stage::kStatic);
                     return s > 0;
                 }
+                if (lattice_) {
+                    // The static filter is exact on a lattice (its bound is 0): a tie, decided.
+                    tally.count_predicate(PredicateKind::kInsphere, predicates::Stage::kStatic);
+                    return tie_breaks_into(t, u, tally);
+                }
                 const predicates::Verdict exact = predicates::insphere_staged(
                     point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
                 tally.count_predicate(PredicateKind::kInsphere, exact.stage);
@@ -204,8 +231,11 @@ public:
                         point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u))) {
                     return s > 0;
                 }
-                const Sign exact = predicates::insphere(
-                    point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
+                // On a lattice the static filter is exact (its bound is 0): this is a tie.
+                const Sign exact =
+                    lattice_ ? Sign::kZero
+                             : predicates::insphere(
+                                   point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
                 // On an exact tie go straight to the tie-break: the exact determinant is already
                 // known to be zero, and evaluating it again costs about 12% of a 50^3 grid's run.
                 return exact != Sign::kZero ? exact == Sign::kPos : tie_breaks_into(t, u);
@@ -251,20 +281,30 @@ private:
     bool tie_breaks_into(const TetVertices& t, VertexId u) const;
     /// The same, counting the tie-break and its cofactors.
     bool tie_breaks_into(const TetVertices& t, VertexId u, Counters& tally) const;
+    /// orient3d on a lattice geometry of four points in its box (out of line, to keep the walks'
+    /// inlined code as small as without lattices).
+    Sign orient3d_on_lattice_or_exact(const Point3& a,
+                                      const Point3& b,
+                                      const Point3& c,
+                                      const Point3& d) const;
     /// orient3d on the exact points (out of line: only geometries with implicit points call it).
     predicates::Verdict orient3d_generic(VertexId a, VertexId b, VertexId c, VertexId d) const;
     template <Tally T>
     bool conflicts_solid_exactly(const TetVertices& t, VertexId u, T& tally) const;
 
-    /// Grows the bounding box to hold p and remakes the static filter for it (the filter is sound
-    /// only for points in its box).
+    /// Grows the bounding box to hold p and remakes the static filters for it (the filters are
+    /// sound only for points in their box), and keeps lattice_ true only while p keeps the points
+    /// a lattice.
     void widen_box(const Point3& p);
+    /// The static filters for the current box (exact insphere on a lattice).
+    void make_static_filters();
 
     std::vector<Point3> points_;
     std::vector<std::uint32_t> keys_;
     std::vector<double> weights_;
     std::vector<GenericPoint3> exact_;  // empty, or one definition per point (see the top)
     bool plain_ = true;                 // unweighted and no implicit point: the inline fast path
+    bool lattice_ = false;              // plain_, integer points, exact lattice box (see the top)
     Point3 box_lo_{};                   // bounding box of points_, when there are any
     Point3 box_hi_{};
     predicates::InsphereStaticFilter insphere_static_;  // for points in that box
