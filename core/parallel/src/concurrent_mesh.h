@@ -15,13 +15,15 @@
 namespace cavity::core {
 
 /// The tetrahedra of a parallel construction, shared by its threads: the array storage's records
-/// (vertices and neighbours), one owner byte per slot (the tetrahedron's lock) and one liveness
-/// bit.
+/// (vertices and neighbours) and one owner byte per slot, which is the tetrahedron's lock and
+/// says whether it lives.
 ///
 /// The discipline that makes it race-free: a thread reads or writes a record only while it owns
 /// the slot (try_lock acquired it, unlock releases it), so the lock's acquire and release order
-/// every record access; the owner bytes and the liveness words, which neighbouring slots of
-/// different owners share, are only touched atomically. A thread owns every tetrahedron it looks
+/// every record access; the owner bytes, which neighbouring slots of different owners share, are
+/// only touched atomically. A dead slot's byte is kDead, which try_lock never takes: the thread
+/// that freed the slot (or claimed its block) is the only one that can hand it out again, with a
+/// plain store and no read-modify-write. A thread owns every tetrahedron it looks
 /// at while inserting a point (the walk's current one, the cavity, the cavity's neighbours), as in
 /// HXT's parallel Delaunay (Marot, Pellerin & Remacle 2019): whoever would change a tetrahedron,
 /// or the neighbour pointer towards it, must own it first.
@@ -34,6 +36,9 @@ public:
     /// the tetrahedron is in that thread's current cavity.
     static constexpr std::uint8_t kFree = 0;
     static constexpr std::uint8_t kCavityBit = 0x80;
+    /// Owner byte of a dead slot (never handed out, or freed): the cavity bit of no thread, as
+    /// no thread's id is 0.
+    static constexpr std::uint8_t kDead = kCavityBit;
 
     /// Makes room for `slots` slots; the new ones are dead and free. No thread may run.
     ///
@@ -51,17 +56,13 @@ public:
         }
         records_ = std::move(records);
         capacity_ = slots;
-        owner_.resize(slots, kFree);
-        alive_.resize(slots / 64 + 1, 0);
+        owner_.resize(slots, kDead);
         next_.store(keep);
     }
 
     std::size_t capacity() const { return capacity_; }
 
-    std::size_t bytes() const {
-        return capacity_ * sizeof(ArrayRecord) + owner_.capacity() +
-               alive_.capacity() * sizeof(std::uint64_t);
-    }
+    std::size_t bytes() const { return capacity_ * sizeof(ArrayRecord) + owner_.capacity(); }
 
     /// Slots handed out so far (every live tetrahedron is below).
     std::size_t used() const { return std::min<std::size_t>(next_.load(), capacity()); }
@@ -93,8 +94,8 @@ public:
         return std::atomic_ref<std::uint8_t>(owner_[t]).load(std::memory_order_relaxed);
     }
 
-    /// Changes the byte of a slot the caller owns (marks it in or out of its cavity), or claims a
-    /// fresh slot no other thread can know of.
+    /// Changes the byte of a slot the caller owns (marks it in or out of its cavity, or dead), or
+    /// claims a dead slot that only the caller can hand out (from its block or its free list).
     void set_owner(TetId t, std::uint8_t value) {
         std::atomic_ref<std::uint8_t>(owner_[t]).store(value, std::memory_order_relaxed);
     }
@@ -103,21 +104,9 @@ public:
         std::atomic_ref<std::uint8_t>(owner_[t]).store(kFree, std::memory_order_release);
     }
 
-    bool alive(TetId t) {
-        return (std::atomic_ref<std::uint64_t>(alive_[t >> 6]).load(std::memory_order_relaxed) >>
-                    (t & 63u) &
-                1u) != 0;
-    }
-
-    void set_alive(TetId t) {
-        std::atomic_ref<std::uint64_t>(alive_[t >> 6])
-            .fetch_or(std::uint64_t{1} << (t & 63u), std::memory_order_relaxed);
-    }
-
-    void set_dead(TetId t) {
-        std::atomic_ref<std::uint64_t>(alive_[t >> 6])
-            .fetch_and(~(std::uint64_t{1} << (t & 63u)), std::memory_order_relaxed);
-    }
+    /// Whether slot t holds a tetrahedron: exact for a slot the caller owns, or when no thread
+    /// runs. (A successful try_lock needs no such check: it takes live slots only.)
+    bool alive(TetId t) { return owner(t) != kDead; }
 
     void prefetch_neighbours(TetId t) const {
         for (HalfFacet h : records_[t].n) {
@@ -132,7 +121,6 @@ public:
         records_.reset();
         capacity_ = 0;
         std::vector<std::uint8_t>().swap(owner_);
-        std::vector<std::uint64_t>().swap(alive_);
         next_.store(0);
     }
 
@@ -164,7 +152,6 @@ private:
     RecordArray records_;
     std::size_t capacity_ = 0;
     std::vector<std::uint8_t> owner_;
-    std::vector<std::uint64_t> alive_;
     std::atomic<std::size_t> next_{0};
 };
 

@@ -29,7 +29,11 @@ InsertionWorker::InsertionWorker(std::uint8_t id,
 InsertionWorker::Outcome InsertionWorker::insert(VertexId u) {
     const Outcome outcome = attempt(u);
     for (TetId t : held_) {
-        mesh_.unlock(t);
+        // The cavity of an insertion is dead now (fill), and stays out of every other thread's
+        // reach until this worker hands its slot out again.
+        if (mesh_.owner(t) != ConcurrentMesh::kDead) {
+            mesh_.unlock(t);
+        }
     }
     held_.clear();
     cavity_.clear();
@@ -75,15 +79,17 @@ bool InsertionWorker::lock(TetId t) {
 
 TetId InsertionWorker::start_tet() {
     if (last_ != kNoTet) {
-        if (!mesh_.try_lock(last_, id_)) {
+        // Another thread may have deleted it since (then it is dead, and any other start will
+        // do), and may even have reused the slot for a ghost, where a walk cannot start (it
+        // would stop at once).
+        if (mesh_.try_lock(last_, id_)) {
+            if (!is_ghost(mesh_.record(last_).v)) {
+                return last_;
+            }
+            mesh_.unlock(last_);
+        } else if (mesh_.owner(last_) != ConcurrentMesh::kDead) {
             return kNoTet;
         }
-        // Another thread may have deleted it since, and may even have reused the slot for a
-        // ghost, where a walk cannot start (it would stop at once).
-        if (mesh_.alive(last_) && !is_ghost(mesh_.record(last_).v)) {
-            return last_;
-        }
-        mesh_.unlock(last_);
     }
     // Any live solid tetrahedron will do, and the slots after the hint were mostly handed out
     // near it.
@@ -92,7 +98,7 @@ TetId InsertionWorker::start_tet() {
     for (std::size_t k = 0; k < used; ++k) {
         const auto t = static_cast<TetId>((from + k) % used);
         if (mesh_.try_lock(t, id_)) {
-            if (mesh_.alive(t) && !is_ghost(mesh_.record(t).v)) {
+            if (!is_ghost(mesh_.record(t).v)) {
                 last_ = t;
                 return t;
             }
@@ -236,11 +242,9 @@ bool InsertionWorker::reserve_slots(std::size_t count) {
 }
 
 TetId InsertionWorker::new_slot() {
+    // A dead slot of this worker's: no other thread can lock it (try_lock takes live ones only).
     const TetId t = free_.empty() ? block_.first++ : free_.pop_back();
-    // Another thread may hold a dead slot for a moment (start_tet checks its hint under the
-    // lock); it never keeps it.
-    while (!mesh_.try_lock(t, id_)) {
-    }
+    mesh_.set_owner(t, id_);
     held_.push_back(t);
     return t;
 }
@@ -255,7 +259,6 @@ void InsertionWorker::fill(VertexId u) {
         r.n[static_cast<std::size_t>(u_slot)] = b.across;
         mesh_.record(tet_of(b.across)).n[static_cast<std::size_t>(facet_of(b.across))] =
             half_facet(t, u_slot);
-        mesh_.set_alive(t);
         created_.push_back(t);
         if (!is_ghost(v)) {
             last_ = t;
@@ -264,7 +267,7 @@ void InsertionWorker::fill(VertexId u) {
     ConcurrentMesh::OwnedRecords view{mesh_};
     gluer_.glue(view, std::span<const TetId>(created_.begin(), created_.size()), u);
     for (TetId t : cavity_) {
-        mesh_.set_dead(t);
+        mesh_.set_owner(t, ConcurrentMesh::kDead);
         free_.push_back(t);
     }
 }

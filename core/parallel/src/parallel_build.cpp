@@ -39,7 +39,7 @@ std::array<VertexId, 4> bootstrap(const Geometry& geometry, ConcurrentMesh& mesh
     const TetVertices solid{a, b, 2, 3};
     mesh.claim_block(5);
     mesh.record(0).v = solid;
-    mesh.set_alive(0);
+    mesh.set_owner(0, ConcurrentMesh::kFree);
     std::array<TetId, 4> ghosts{};
     for (int f = 0; f < 4; ++f) {
         const auto tri = facet_vertices(solid, f);
@@ -48,7 +48,7 @@ std::array<VertexId, 4> bootstrap(const Geometry& geometry, ConcurrentMesh& mesh
         mesh.record(g).v = {tri[0], tri[2], tri[1], kGhostVertex};
         mesh.record(0).n[static_cast<std::size_t>(f)] = half_facet(g, 3);
         mesh.record(g).n[3] = half_facet(0, f);
-        mesh.set_alive(g);
+        mesh.set_owner(g, ConcurrentMesh::kFree);
     }
     // Each ghost's three faces through the ghost vertex meet the other ghosts' across the edges of
     // the solid tetrahedron: twelve faces, paired by their vertex sets.
