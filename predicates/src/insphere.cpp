@@ -16,10 +16,13 @@ namespace {
 
 std::optional<Verdict> insphere_adaptive(const std::array<Point3, 5>& p) {
     const LiftedRows rows = insphere_rows(p);
-    if (const std::optional<Sign> s = insphere_permanent(rows)) {
+    // One permanent for every stage: on a rounded sphere most queries pass through stage A to
+    // the double-double stage, which needs it again.
+    const double permanent = insphere_row_permanent(rows);
+    if (const std::optional<Sign> s = insphere_permanent(rows, permanent)) {
         return Verdict{*s, Stage::kAdaptive};
     }
-    return lifted_adaptive(rows);
+    return lifted_adaptive(rows, permanent);
 }
 
 }  // namespace

@@ -145,23 +145,6 @@ double first_order_tails(const LiftedRows& r) {
            (row(kA, kC, kD, kB) - row(kB, kC, kD, kA));
 }
 
-/// P~: the permanent of the rounded rows (each monomial by its magnitude, |dw| for -dw).
-double permanent(const LiftedRows& r) {
-    const double* x = r.x;
-    const double* y = r.y;
-    const double* z = r.z;
-    auto perm2 = [&](int i, int j) { return std::abs(x[i] * y[j]) + std::abs(x[j] * y[i]); };
-    auto perm3 = [&](int i, int j, int k) {
-        return std::abs(z[i]) * perm2(j, k) + std::abs(z[j]) * perm2(i, k) +
-               std::abs(z[k]) * perm2(i, j);
-    };
-    auto lift = [&](int i) {
-        return ((x[i] * x[i] + y[i] * y[i]) + z[i] * z[i]) + std::abs(r.w[i]);
-    };
-    return (lift(kD) * perm3(kA, kB, kC) + lift(kC) * perm3(kA, kB, kD)) +
-           (lift(kB) * perm3(kA, kC, kD) + lift(kA) * perm3(kB, kC, kD));
-}
-
 // The double-double stage's bound (u = 2^-53). Every difference is taken exactly as head + tail
 // (its two_diff), so the only errors are the roundings of the double-double operations, bounded in
 // double_double.h against the magnitudes of their operands: at most beta u^2 |x| |y| for a
@@ -179,8 +162,9 @@ double permanent(const LiftedRows& r) {
 //   (T_d - T_c) + (T_b - T_a): (4, 8).
 // So eps <= (1 + beta u^2)^4 (1 + alpha u^2)^8 - 1 <= 56u^2 + 140u^3 + 3200u^4 <= 56u^2 (1 + 3u).
 // The permanent of the exact differences is at most (1 + u)^5 times P of the heads (degree 5; a
-// weight, degree 2, appears in monomials of degree 4), and P <= P~ / (1 - u)^12 for P~ as
-// computed by permanent(), so the error is at most 56u^2 (1 + 3u) (1 + u)^5 / (1 - u)^12 P~
+// weight, degree 2, appears in monomials of degree 4), and P <= P~ / (1 - u)^12 for P~
+// computed with at most 12 roundings along a path (lifted_permanent; insphere_row_permanent has
+// 11), so the error is at most 56u^2 (1 + 3u) (1 + u)^5 / (1 - u)^12 P~
 // <= 56u^2 (1 + 21u) P~. The result hi + lo has the sign of hi and |hi + lo| >= (1 - u)|hi|, so
 // the sign of hi is certified when (1 - u)|hi| exceeds that. The test fl(|hi| 2^80) >
 // fl(58 P~) 2^-26 (both scalings exact, as for stage C's test) gives |hi| > 58 (1 - u) u^2 P~ and
@@ -238,6 +222,24 @@ template <ProductKind K>
 
 }  // namespace
 
+// Along a monomial's path: the 2x2 term (2 roundings), the 3x3 term (3), the lift (4: three
+// additions after the squares, the fourth with |dw|), their product (1), the final sum (2): 12.
+double lifted_permanent(const LiftedRows& r) {
+    const double* x = r.x;
+    const double* y = r.y;
+    const double* z = r.z;
+    auto perm2 = [&](int i, int j) { return std::abs(x[i] * y[j]) + std::abs(x[j] * y[i]); };
+    auto perm3 = [&](int i, int j, int k) {
+        return std::abs(z[i]) * perm2(j, k) + std::abs(z[j]) * perm2(i, k) +
+               std::abs(z[k]) * perm2(i, j);
+    };
+    auto lift = [&](int i) {
+        return ((x[i] * x[i] + y[i] * y[i]) + z[i] * z[i]) + std::abs(r.w[i]);
+    };
+    return (lift(kD) * perm3(kA, kB, kC) + lift(kC) * perm3(kA, kB, kD)) +
+           (lift(kB) * perm3(kA, kC, kD) + lift(kA) * perm3(kB, kC, kD));
+}
+
 DoubleDouble lifted_double_double_determinant(const LiftedRows& rows, ProductKind kind) {
 #if CAVITY_FUSED_PRODUCTS
     if (kind == ProductKind::kFused) {
@@ -248,19 +250,19 @@ DoubleDouble lifted_double_double_determinant(const LiftedRows& rows, ProductKin
     return lifted_determinant_dd<ProductKind::kDekker>(rows);
 }
 
-std::optional<Sign> lifted_double_double(const LiftedRows& r) {
+std::optional<Sign> lifted_double_double(const LiftedRows& r, double permanent) {
     const DoubleDouble det = lifted_double_double_determinant(
         r, fused_products_available() ? ProductKind::kFused : ProductKind::kDekker);
-    if (std::abs(det.hi) * kLowerScale > (kDoubleDoubleBound * permanent(r)) * kBoundScale) {
+    if (std::abs(det.hi) * kLowerScale > (kDoubleDoubleBound * permanent) * kBoundScale) {
         return det.hi > 0.0 ? Sign::kPos : Sign::kNeg;
     }
     return std::nullopt;
 }
 
-std::optional<Verdict> lifted_adaptive(const LiftedRows& rows) {
+std::optional<Verdict> lifted_adaptive(const LiftedRows& rows, double permanent) {
     // The double-double stage: almost every in-range query the filter leaves, at a fraction of
     // the cost of stage B's exact expansion.
-    if (const std::optional<Sign> s = lifted_double_double(rows)) {
+    if (const std::optional<Sign> s = lifted_double_double(rows, permanent)) {
         return Verdict{*s, Stage::kAdaptive};
     }
     // Stage B.
@@ -276,7 +278,7 @@ std::optional<Verdict> lifted_adaptive(const LiftedRows& rows) {
     double corrected[SmallExpansion::kCapacity + 1];
     const int corrected_len = expansion_sum(det.size, det.c, 1, &first_order, corrected);
     const double lower = expansion_magnitude_lower_bound(corrected_len, corrected);
-    if (lower * kLowerScale > (kTailBound * permanent(rows)) * kBoundScale) {
+    if (lower * kLowerScale > (kTailBound * permanent) * kBoundScale) {
         return Verdict{static_cast<Sign>(expansion_sign(corrected_len, corrected)),
                        Stage::kAdaptive};
     }

@@ -27,7 +27,7 @@ std::optional<Verdict> orient4d_adaptive(const std::array<WeightedPoint3, 5>& p)
                  std::abs(rows.wt[i]);
     }
     rows.differences_exact = tails == 0.0;
-    return lifted_adaptive(rows);
+    return lifted_adaptive(rows, lifted_permanent(rows));
 }
 
 }  // namespace

@@ -27,6 +27,7 @@
 #include "cavity/predicates/orient3d.h"
 #include "cavity/predicates/orient4d.h"
 #include "fused_products.h"
+#include "insphere_permanent.h"
 #include "lifted_adaptive.h"
 #include "orient3d_adaptive.h"
 
@@ -170,6 +171,16 @@ detail::LiftedRows lifted_rows(const std::array<WeightedPoint3, 5>& p) {
     return rows;
 }
 
+/// The stage as insphere runs it: with the permanent of its stage A (insphere_permanent.h).
+std::optional<Sign> insphere_stage(const detail::LiftedRows& rows) {
+    return detail::lifted_double_double(rows, detail::insphere_row_permanent(rows));
+}
+
+/// The stage as orient4d runs it.
+std::optional<Sign> orient4d_stage(const detail::LiftedRows& rows) {
+    return detail::lifted_double_double(rows, detail::lifted_permanent(rows));
+}
+
 class Source {
 public:
     explicit Source(std::uint64_t seed) : rng_(seed) {}
@@ -282,7 +293,7 @@ TEST(DoubleDoubleBound, Insphere) {
         sweep.check(
             hex(p),
             lifted_reference(p),
-            detail::lifted_double_double(lifted_rows(p)),
+            insphere_stage(lifted_rows(p)),
             insphere(point(p[0]), point(p[1]), point(p[2]), point(p[3]), point(p[4])),
             oracle::insphere(point(p[0]), point(p[1]), point(p[2]), point(p[3]), point(p[4])));
     }
@@ -311,7 +322,7 @@ TEST(DoubleDoubleBound, Orient4d) {
                 s.tiny(k - s.integer(0, 6))};
         sweep.check(hex(p),
                     lifted_reference(p),
-                    detail::lifted_double_double(lifted_rows(p)),
+                    orient4d_stage(lifted_rows(p)),
                     orient4d(p[0], p[1], p[2], p[3], p[4]),
                     oracle::orient4d(p[0], p[1], p[2], p[3], p[4]));
     }

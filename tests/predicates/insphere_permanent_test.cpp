@@ -43,7 +43,8 @@ void check(const Query& q, Tally& tally) {
     if (!range.within(kLiftedAdaptiveWindow)) {
         return;
     }
-    const std::optional<Sign> s = insphere_permanent(rows_of(q));
+    const LiftedRows rows = rows_of(q);
+    const std::optional<Sign> s = insphere_permanent(rows, insphere_row_permanent(rows));
     if (!s) {
         return;
     }
