@@ -175,8 +175,63 @@ double first_order_tails(const LiftedRows& r) {
 // magnitudes stay below (1 + eps) times the permanent, below 2^917.
 constexpr double kDoubleDoubleBound = 58.0;
 
-/// The determinant of the double-double stage, its products' errors found the K way.
+/// The double-double product x y of a double x and a double-double y: product<K>({x, 0}, y)
+/// without the terms of the zero tail (they add nothing, so the value and the bound are the same).
 template <ProductKind K>
+[[gnu::always_inline]] inline DoubleDouble product_by_double(double x, DoubleDouble y) {
+    double p;
+    double e;
+    exact_product<K>(x, y.hi, p, e);
+    const double t = e + x * y.lo;
+    DoubleDouble r;
+    fast_two_sum(p, t, r.hi, r.lo);
+    return r;
+}
+
+/// The exact product x y of two doubles as a double-double: product<K>({x, 0}, {y, 0}), whose
+/// correction terms vanish and whose final fast_two_sum returns the exact pair (p, e) unchanged
+/// (p = fl(x y) is x y rounded, so fl(p + e) = p).
+template <ProductKind K>
+[[gnu::always_inline]] inline DoubleDouble exact_product_dd(double x, double y) {
+    DoubleDouble r;
+    exact_product<K>(x, y, r.hi, r.lo);
+    return r;
+}
+
+/// The products of the stage on differences (double-doubles whose tails are zero with
+/// kExactRows): of two differences, of a difference and a double-double, and a difference squared.
+template <ProductKind K, bool kExactRows>
+[[gnu::always_inline]] inline DoubleDouble pair_product(DoubleDouble a, DoubleDouble b) {
+    if constexpr (kExactRows) {
+        return exact_product_dd<K>(a.hi, b.hi);
+    } else {
+        return product<K>(a, b);
+    }
+}
+
+template <ProductKind K, bool kExactRows>
+[[gnu::always_inline]] inline DoubleDouble scaled(DoubleDouble a, DoubleDouble b) {
+    if constexpr (kExactRows) {
+        return product_by_double<K>(a.hi, b);
+    } else {
+        return product<K>(a, b);
+    }
+}
+
+template <ProductKind K, bool kExactRows>
+[[gnu::always_inline]] inline DoubleDouble squared(DoubleDouble a) {
+    if constexpr (kExactRows) {
+        return exact_product_dd<K>(a.hi, a.hi);
+    } else {
+        return square<K>(a);
+    }
+}
+
+/// The determinant of the double-double stage, its products' errors found the K way. With
+/// kExactRows (every difference exact: the tails are zero), the products of differences skip the
+/// terms of the zero tails; the values are those of the general evaluation (but for the sign of
+/// a zero), so its error bound holds unchanged. On a rounded sphere most rows are exact.
+template <ProductKind K, bool kExactRows>
 [[gnu::always_inline]] inline DoubleDouble lifted_determinant_dd(const LiftedRows& r) {
     DoubleDouble x[4], y[4], z[4], w[4];
     for (int i = 0; i < 4; ++i) {
@@ -188,7 +243,8 @@ template <ProductKind K>
     DoubleDouble m2[4][4];
     for (int i = 0; i < 4; ++i) {
         for (int j = i + 1; j < 4; ++j) {
-            m2[i][j] = difference(product<K>(x[i], y[j]), product<K>(x[j], y[i]));
+            m2[i][j] = difference(pair_product<K, kExactRows>(x[i], y[j]),
+                                  pair_product<K, kExactRows>(x[j], y[i]));
         }
     }
     // Loops rather than lambdas: a lambda not inlined would be compiled outside the FMA target,
@@ -199,8 +255,9 @@ template <ProductKind K>
 #pragma GCC unroll 4
     for (int m = 0; m < 4; ++m) {
         const int i = kMinor[m][0], j = kMinor[m][1], k = kMinor[m][2];
-        minor3[m] = sum(difference(product<K>(z[i], m2[j][k]), product<K>(z[j], m2[i][k])),
-                        product<K>(z[k], m2[i][j]));
+        minor3[m] = sum(difference(scaled<K, kExactRows>(z[i], m2[j][k]),
+                                   scaled<K, kExactRows>(z[j], m2[i][k])),
+                        scaled<K, kExactRows>(z[k], m2[i][j]));
     }
     DoubleDouble term[4];  // lift_l times the minor of the other three rows, l = d, c, b, a
     constexpr int kLift[4] = {kD, kC, kB, kA};
@@ -208,7 +265,9 @@ template <ProductKind K>
     for (int m = 0; m < 4; ++m) {
         const int l = kLift[m];
         const DoubleDouble lift =
-            difference(sum(sum(square<K>(x[l]), square<K>(y[l])), square<K>(z[l])), w[l]);
+            difference(sum(sum(squared<K, kExactRows>(x[l]), squared<K, kExactRows>(y[l])),
+                           squared<K, kExactRows>(z[l])),
+                       w[l]);
         term[m] = product<K>(lift, minor3[m]);
     }
     return sum(difference(term[0], term[1]), difference(term[2], term[3]));
@@ -216,7 +275,8 @@ template <ProductKind K>
 
 #if CAVITY_FUSED_PRODUCTS
 [[gnu::target("fma")]] DoubleDouble lifted_determinant_fused(const LiftedRows& r) {
-    return lifted_determinant_dd<ProductKind::kFused>(r);
+    return r.differences_exact ? lifted_determinant_dd<ProductKind::kFused, true>(r)
+                               : lifted_determinant_dd<ProductKind::kFused, false>(r);
 }
 #endif
 
@@ -247,7 +307,8 @@ DoubleDouble lifted_double_double_determinant(const LiftedRows& rows, ProductKin
     }
 #endif
     (void)kind;
-    return lifted_determinant_dd<ProductKind::kDekker>(rows);
+    return rows.differences_exact ? lifted_determinant_dd<ProductKind::kDekker, true>(rows)
+                                  : lifted_determinant_dd<ProductKind::kDekker, false>(rows);
 }
 
 std::optional<Sign> lifted_double_double(const LiftedRows& r, double permanent) {
