@@ -16,10 +16,13 @@ namespace {
 
 std::optional<Verdict> insphere_adaptive(const std::array<Point3, 5>& p) {
     const LiftedRows rows = insphere_rows(p);
-    if (const std::optional<Sign> s = insphere_permanent(rows)) {
+    // One permanent for every stage: on a rounded sphere most queries pass through stage A to
+    // the double-double stage, which needs it again.
+    const double permanent = insphere_row_permanent(rows);
+    if (const std::optional<Sign> s = insphere_permanent(rows, permanent)) {
         return Verdict{*s, Stage::kAdaptive};
     }
-    return lifted_adaptive(rows);
+    return lifted_adaptive(rows, permanent);
 }
 
 }  // namespace
@@ -27,8 +30,9 @@ std::optional<Verdict> insphere_adaptive(const std::array<Point3, 5>& p) {
 Verdict insphere_slow(
     const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
     const std::array<Point3, 5> query = {a, b, c, d, e};
-    if (is_small_integer(a) & is_small_integer(b) & is_small_integer(c) & is_small_integer(d) &
-        is_small_integer(e)) {
+    // The first point alone before the others: most queries here have fractional coordinates.
+    if (is_small_integer(a) &&
+        (is_small_integer(b) & is_small_integer(c) & is_small_integer(d) & is_small_integer(e))) {
         LiftedRows rows{};
         for (int i = 0; i < 4; ++i) {
             rows.x[i] = query[i].x - query[4].x;

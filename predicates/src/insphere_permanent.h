@@ -45,19 +45,14 @@ namespace cavity::predicates::detail {
 inline constexpr double kInspherePermanentBound = 12.0 * 0x1p-53;
 inline constexpr double kInspherePermanentFloor = 0x1p-1000;
 
-/// The sign of the insphere determinant of the rows when their differences are exact and the
-/// permanent bound certifies it; none otherwise. Requires inputs in kLiftedAdaptiveWindow and no
-/// weights (rows.w zero).
-inline std::optional<Sign> insphere_permanent(const LiftedRows& rows) {
-    if (!rows.differences_exact) {
-        return std::nullopt;
-    }
+/// P~, the permanent of the rows (no weights) in the shape of insphere_determinant: at most 11
+/// roundings along any monomial's path. It serves every stage of insphere after the filter: this
+/// one, and the double-double stage and stage C of lifted_adaptive, whose bounds admit any P~
+/// computed with at most 12 roundings along a path (lifted_adaptive.h).
+inline double insphere_row_permanent(const LiftedRows& rows) {
     const double(&x)[4] = rows.x;
     const double(&y)[4] = rows.y;
     const double(&z)[4] = rows.z;
-    const double det = insphere_determinant(
-        x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2], x[3], y[3], z[3]);
-
     double ax[4], ay[4], az[4], lift[4];
     for (int i = 0; i < 4; ++i) {
         ax[i] = std::abs(x[i]);
@@ -78,8 +73,21 @@ inline std::optional<Sign> insphere_permanent(const LiftedRows& rows) {
     const double bcd = az[1] * cd + az[2] * bd + az[3] * bc;
     const double cda = az[2] * da + az[3] * ac + az[0] * cd;
     const double dab = az[3] * ab + az[0] * bd + az[1] * da;
-    const double permanent = (lift[3] * abc + lift[2] * dab) + (lift[1] * cda + lift[0] * bcd);
+    return (lift[3] * abc + lift[2] * dab) + (lift[1] * cda + lift[0] * bcd);
+}
 
+/// The sign of the insphere determinant of the rows when their differences are exact and the
+/// permanent bound certifies it; none otherwise. `permanent` is insphere_row_permanent(rows).
+/// Requires inputs in kLiftedAdaptiveWindow and no weights (rows.w zero).
+inline std::optional<Sign> insphere_permanent(const LiftedRows& rows, double permanent) {
+    if (!rows.differences_exact) {
+        return std::nullopt;
+    }
+    const double(&x)[4] = rows.x;
+    const double(&y)[4] = rows.y;
+    const double(&z)[4] = rows.z;
+    const double det = insphere_determinant(
+        x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2], x[3], y[3], z[3]);
     const double bound = std::max(kInspherePermanentBound * permanent, kInspherePermanentFloor);
     if (!(std::abs(det) > bound)) {
         return std::nullopt;

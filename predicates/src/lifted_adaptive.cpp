@@ -145,23 +145,6 @@ double first_order_tails(const LiftedRows& r) {
            (row(kA, kC, kD, kB) - row(kB, kC, kD, kA));
 }
 
-/// P~: the permanent of the rounded rows (each monomial by its magnitude, |dw| for -dw).
-double permanent(const LiftedRows& r) {
-    const double* x = r.x;
-    const double* y = r.y;
-    const double* z = r.z;
-    auto perm2 = [&](int i, int j) { return std::abs(x[i] * y[j]) + std::abs(x[j] * y[i]); };
-    auto perm3 = [&](int i, int j, int k) {
-        return std::abs(z[i]) * perm2(j, k) + std::abs(z[j]) * perm2(i, k) +
-               std::abs(z[k]) * perm2(i, j);
-    };
-    auto lift = [&](int i) {
-        return ((x[i] * x[i] + y[i] * y[i]) + z[i] * z[i]) + std::abs(r.w[i]);
-    };
-    return (lift(kD) * perm3(kA, kB, kC) + lift(kC) * perm3(kA, kB, kD)) +
-           (lift(kB) * perm3(kA, kC, kD) + lift(kA) * perm3(kB, kC, kD));
-}
-
 // The double-double stage's bound (u = 2^-53). Every difference is taken exactly as head + tail
 // (its two_diff), so the only errors are the roundings of the double-double operations, bounded in
 // double_double.h against the magnitudes of their operands: at most beta u^2 |x| |y| for a
@@ -179,8 +162,9 @@ double permanent(const LiftedRows& r) {
 //   (T_d - T_c) + (T_b - T_a): (4, 8).
 // So eps <= (1 + beta u^2)^4 (1 + alpha u^2)^8 - 1 <= 56u^2 + 140u^3 + 3200u^4 <= 56u^2 (1 + 3u).
 // The permanent of the exact differences is at most (1 + u)^5 times P of the heads (degree 5; a
-// weight, degree 2, appears in monomials of degree 4), and P <= P~ / (1 - u)^12 for P~ as
-// computed by permanent(), so the error is at most 56u^2 (1 + 3u) (1 + u)^5 / (1 - u)^12 P~
+// weight, degree 2, appears in monomials of degree 4), and P <= P~ / (1 - u)^12 for P~
+// computed with at most 12 roundings along a path (lifted_permanent; insphere_row_permanent has
+// 11), so the error is at most 56u^2 (1 + 3u) (1 + u)^5 / (1 - u)^12 P~
 // <= 56u^2 (1 + 21u) P~. The result hi + lo has the sign of hi and |hi + lo| >= (1 - u)|hi|, so
 // the sign of hi is certified when (1 - u)|hi| exceeds that. The test fl(|hi| 2^80) >
 // fl(58 P~) 2^-26 (both scalings exact, as for stage C's test) gives |hi| > 58 (1 - u) u^2 P~ and
@@ -191,8 +175,63 @@ double permanent(const LiftedRows& r) {
 // magnitudes stay below (1 + eps) times the permanent, below 2^917.
 constexpr double kDoubleDoubleBound = 58.0;
 
-/// The determinant of the double-double stage, its products' errors found the K way.
+/// The double-double product x y of a double x and a double-double y: product<K>({x, 0}, y)
+/// without the terms of the zero tail (they add nothing, so the value and the bound are the same).
 template <ProductKind K>
+[[gnu::always_inline]] inline DoubleDouble product_by_double(double x, DoubleDouble y) {
+    double p;
+    double e;
+    exact_product<K>(x, y.hi, p, e);
+    const double t = e + x * y.lo;
+    DoubleDouble r;
+    fast_two_sum(p, t, r.hi, r.lo);
+    return r;
+}
+
+/// The exact product x y of two doubles as a double-double: product<K>({x, 0}, {y, 0}), whose
+/// correction terms vanish and whose final fast_two_sum returns the exact pair (p, e) unchanged
+/// (p = fl(x y) is x y rounded, so fl(p + e) = p).
+template <ProductKind K>
+[[gnu::always_inline]] inline DoubleDouble exact_product_dd(double x, double y) {
+    DoubleDouble r;
+    exact_product<K>(x, y, r.hi, r.lo);
+    return r;
+}
+
+/// The products of the stage on differences (double-doubles whose tails are zero with
+/// kExactRows): of two differences, of a difference and a double-double, and a difference squared.
+template <ProductKind K, bool kExactRows>
+[[gnu::always_inline]] inline DoubleDouble pair_product(DoubleDouble a, DoubleDouble b) {
+    if constexpr (kExactRows) {
+        return exact_product_dd<K>(a.hi, b.hi);
+    } else {
+        return product<K>(a, b);
+    }
+}
+
+template <ProductKind K, bool kExactRows>
+[[gnu::always_inline]] inline DoubleDouble scaled(DoubleDouble a, DoubleDouble b) {
+    if constexpr (kExactRows) {
+        return product_by_double<K>(a.hi, b);
+    } else {
+        return product<K>(a, b);
+    }
+}
+
+template <ProductKind K, bool kExactRows>
+[[gnu::always_inline]] inline DoubleDouble squared(DoubleDouble a) {
+    if constexpr (kExactRows) {
+        return exact_product_dd<K>(a.hi, a.hi);
+    } else {
+        return square<K>(a);
+    }
+}
+
+/// The determinant of the double-double stage, its products' errors found the K way. With
+/// kExactRows (every difference exact: the tails are zero), the products of differences skip the
+/// terms of the zero tails; the values are those of the general evaluation (but for the sign of
+/// a zero), so its error bound holds unchanged. On a rounded sphere most rows are exact.
+template <ProductKind K, bool kExactRows>
 [[gnu::always_inline]] inline DoubleDouble lifted_determinant_dd(const LiftedRows& r) {
     DoubleDouble x[4], y[4], z[4], w[4];
     for (int i = 0; i < 4; ++i) {
@@ -204,7 +243,8 @@ template <ProductKind K>
     DoubleDouble m2[4][4];
     for (int i = 0; i < 4; ++i) {
         for (int j = i + 1; j < 4; ++j) {
-            m2[i][j] = difference(product<K>(x[i], y[j]), product<K>(x[j], y[i]));
+            m2[i][j] = difference(pair_product<K, kExactRows>(x[i], y[j]),
+                                  pair_product<K, kExactRows>(x[j], y[i]));
         }
     }
     // Loops rather than lambdas: a lambda not inlined would be compiled outside the FMA target,
@@ -215,8 +255,9 @@ template <ProductKind K>
 #pragma GCC unroll 4
     for (int m = 0; m < 4; ++m) {
         const int i = kMinor[m][0], j = kMinor[m][1], k = kMinor[m][2];
-        minor3[m] = sum(difference(product<K>(z[i], m2[j][k]), product<K>(z[j], m2[i][k])),
-                        product<K>(z[k], m2[i][j]));
+        minor3[m] = sum(difference(scaled<K, kExactRows>(z[i], m2[j][k]),
+                                   scaled<K, kExactRows>(z[j], m2[i][k])),
+                        scaled<K, kExactRows>(z[k], m2[i][j]));
     }
     DoubleDouble term[4];  // lift_l times the minor of the other three rows, l = d, c, b, a
     constexpr int kLift[4] = {kD, kC, kB, kA};
@@ -224,7 +265,9 @@ template <ProductKind K>
     for (int m = 0; m < 4; ++m) {
         const int l = kLift[m];
         const DoubleDouble lift =
-            difference(sum(sum(square<K>(x[l]), square<K>(y[l])), square<K>(z[l])), w[l]);
+            difference(sum(sum(squared<K, kExactRows>(x[l]), squared<K, kExactRows>(y[l])),
+                           squared<K, kExactRows>(z[l])),
+                       w[l]);
         term[m] = product<K>(lift, minor3[m]);
     }
     return sum(difference(term[0], term[1]), difference(term[2], term[3]));
@@ -232,11 +275,30 @@ template <ProductKind K>
 
 #if CAVITY_FUSED_PRODUCTS
 [[gnu::target("fma")]] DoubleDouble lifted_determinant_fused(const LiftedRows& r) {
-    return lifted_determinant_dd<ProductKind::kFused>(r);
+    return r.differences_exact ? lifted_determinant_dd<ProductKind::kFused, true>(r)
+                               : lifted_determinant_dd<ProductKind::kFused, false>(r);
 }
 #endif
 
 }  // namespace
+
+// Along a monomial's path: the 2x2 term (2 roundings), the 3x3 term (3), the lift (4: three
+// additions after the squares, the fourth with |dw|), their product (1), the final sum (2): 12.
+double lifted_permanent(const LiftedRows& r) {
+    const double* x = r.x;
+    const double* y = r.y;
+    const double* z = r.z;
+    auto perm2 = [&](int i, int j) { return std::abs(x[i] * y[j]) + std::abs(x[j] * y[i]); };
+    auto perm3 = [&](int i, int j, int k) {
+        return std::abs(z[i]) * perm2(j, k) + std::abs(z[j]) * perm2(i, k) +
+               std::abs(z[k]) * perm2(i, j);
+    };
+    auto lift = [&](int i) {
+        return ((x[i] * x[i] + y[i] * y[i]) + z[i] * z[i]) + std::abs(r.w[i]);
+    };
+    return (lift(kD) * perm3(kA, kB, kC) + lift(kC) * perm3(kA, kB, kD)) +
+           (lift(kB) * perm3(kA, kC, kD) + lift(kA) * perm3(kB, kC, kD));
+}
 
 DoubleDouble lifted_double_double_determinant(const LiftedRows& rows, ProductKind kind) {
 #if CAVITY_FUSED_PRODUCTS
@@ -245,22 +307,23 @@ DoubleDouble lifted_double_double_determinant(const LiftedRows& rows, ProductKin
     }
 #endif
     (void)kind;
-    return lifted_determinant_dd<ProductKind::kDekker>(rows);
+    return rows.differences_exact ? lifted_determinant_dd<ProductKind::kDekker, true>(rows)
+                                  : lifted_determinant_dd<ProductKind::kDekker, false>(rows);
 }
 
-std::optional<Sign> lifted_double_double(const LiftedRows& r) {
+std::optional<Sign> lifted_double_double(const LiftedRows& r, double permanent) {
     const DoubleDouble det = lifted_double_double_determinant(
         r, fused_products_available() ? ProductKind::kFused : ProductKind::kDekker);
-    if (std::abs(det.hi) * kLowerScale > (kDoubleDoubleBound * permanent(r)) * kBoundScale) {
+    if (std::abs(det.hi) * kLowerScale > (kDoubleDoubleBound * permanent) * kBoundScale) {
         return det.hi > 0.0 ? Sign::kPos : Sign::kNeg;
     }
     return std::nullopt;
 }
 
-std::optional<Verdict> lifted_adaptive(const LiftedRows& rows) {
+std::optional<Verdict> lifted_adaptive(const LiftedRows& rows, double permanent) {
     // The double-double stage: almost every in-range query the filter leaves, at a fraction of
     // the cost of stage B's exact expansion.
-    if (const std::optional<Sign> s = lifted_double_double(rows)) {
+    if (const std::optional<Sign> s = lifted_double_double(rows, permanent)) {
         return Verdict{*s, Stage::kAdaptive};
     }
     // Stage B.
@@ -276,7 +339,7 @@ std::optional<Verdict> lifted_adaptive(const LiftedRows& rows) {
     double corrected[SmallExpansion::kCapacity + 1];
     const int corrected_len = expansion_sum(det.size, det.c, 1, &first_order, corrected);
     const double lower = expansion_magnitude_lower_bound(corrected_len, corrected);
-    if (lower * kLowerScale > (kTailBound * permanent(rows)) * kBoundScale) {
+    if (lower * kLowerScale > (kTailBound * permanent) * kBoundScale) {
         return Verdict{static_cast<Sign>(expansion_sign(corrected_len, corrected)),
                        Stage::kAdaptive};
     }

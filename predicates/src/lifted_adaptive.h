@@ -56,19 +56,26 @@ inline LiftedRows insphere_rows(const std::array<Point3, 5>& p) {
     return rows;
 }
 
+/// P~, the permanent of the rounded rows (every monomial of the determinant by its magnitude,
+/// |dw| for -dw), with at most 12 roundings along any monomial's path. The bounds of the stages
+/// below take it as an argument and hold for any P~ computed with at most 12 roundings along a
+/// path, so that a caller which has one already (insphere's stage A) computes it once.
+double lifted_permanent(const LiftedRows& rows);
+
 /// The double-double stage that runs before stage B: the sign of the determinant evaluated in
 /// double-double arithmetic over the exact differences (rounded + tail), when certified by its
-/// error bound; none otherwise. Requires inputs in kLiftedAdaptiveWindow. Exposed for the tests
-/// that probe the bound.
-std::optional<Sign> lifted_double_double(const LiftedRows& rows);
+/// error bound; none otherwise. `permanent` as for lifted_permanent. Requires inputs in
+/// kLiftedAdaptiveWindow. Exposed for the tests that probe the bound.
+std::optional<Sign> lifted_double_double(const LiftedRows& rows, double permanent);
 
 /// The determinant that stage evaluates, with the products' errors found the given way (kFused
 /// only where fused_products_available(); the two agree bit for bit, which the tests check).
 DoubleDouble lifted_double_double_determinant(const LiftedRows& rows, ProductKind kind);
 
 /// The verdict of the double-double stage or stages B and C (kAdaptive) or D (kExact); none when
-/// D's expansions would outgrow their buffers. Requires inputs in kLiftedAdaptiveWindow.
-std::optional<Verdict> lifted_adaptive(const LiftedRows& rows);
+/// D's expansions would outgrow their buffers. `permanent` as for lifted_permanent. Requires
+/// inputs in kLiftedAdaptiveWindow.
+std::optional<Verdict> lifted_adaptive(const LiftedRows& rows, double permanent);
 
 /// The exact sign when the points are integers below 2^50 (checked by the caller; the rows are
 /// then exact differences) with coordinate differences of at most 2^16; none otherwise.

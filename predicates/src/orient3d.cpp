@@ -21,7 +21,9 @@ std::optional<Sign> orient3d_small_integers(const Point3& a,
                                             const Point3& b,
                                             const Point3& c,
                                             const Point3& d) {
-    if (!(is_small_integer(a) & is_small_integer(b) & is_small_integer(c) & is_small_integer(d))) {
+    // The first point alone before the others: most queries here have fractional coordinates.
+    if (!(is_small_integer(a) &&
+          (is_small_integer(b) & is_small_integer(c) & is_small_integer(d)))) {
         return std::nullopt;
     }
     const double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;

@@ -27,7 +27,7 @@ std::optional<Verdict> orient4d_adaptive(const std::array<WeightedPoint3, 5>& p)
                  std::abs(rows.wt[i]);
     }
     rows.differences_exact = tails == 0.0;
-    return lifted_adaptive(rows);
+    return lifted_adaptive(rows, lifted_permanent(rows));
 }
 
 }  // namespace
@@ -38,8 +38,9 @@ Verdict orient4d_slow(const WeightedPoint3& a,
                       const WeightedPoint3& d,
                       const WeightedPoint3& e) {
     const std::array<WeightedPoint3, 5> query = {a, b, c, d, e};
-    if (is_small_integer(a) & is_small_integer(b) & is_small_integer(c) & is_small_integer(d) &
-        is_small_integer(e)) {
+    // The first point alone before the others: most queries here have fractional coordinates.
+    if (is_small_integer(a) &&
+        (is_small_integer(b) & is_small_integer(c) & is_small_integer(d) & is_small_integer(e))) {
         LiftedRows rows{};
         for (int i = 0; i < 4; ++i) {
             rows.x[i] = query[i].x - query[4].x;

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 
 #include "cavity/predicates/point.h"
 #include "cavity/predicates/sign.h"
@@ -47,8 +48,6 @@ public:
         }
     }
 
-    bool within(ExponentWindow w) const { return lo_ >= w.min && hi_ <= w.max; }
-
     /// A shift k moving every exponent into the window, centred in the admissible interval so
     /// that the filter's range guards also hold; none when the exponents spread wider than the
     /// window.
@@ -83,6 +82,36 @@ private:
     int hi_ = INT_MIN;
 };
 
+/// 2^k for a normal power of two (k in [-1022, 1023]), from its bits.
+constexpr double power_of_two(int k) {
+    return std::bit_cast<double>(static_cast<std::uint64_t>(k + 1023) << 52);
+}
+
+/// True when the exponent of every nonzero input lies in the window (a weight's at half its
+/// exponent, as ExponentRange counts it): |v| in [2^min, 2^(max+1)), a weight's in
+/// [2^(2 min), 2^(2 max + 2)). Magnitude comparisons without a branch per value: every query past
+/// the filter asks this, and almost all are in the window. Infinities, NaNs and subnormals are
+/// outside. The window's bounds must be normal powers of two.
+template <typename P, std::size_t N>
+bool within(const std::array<P, N>& points, ExponentWindow w) {
+    bool in = true;
+    const auto check = [&in](double v, double lo, double hi) {
+        const double a = std::abs(v);
+        in &= (a == 0.0) | ((a >= lo) & (a < hi));
+    };
+    const double lo = power_of_two(w.min);
+    const double hi = power_of_two(w.max + 1);
+    for (const P& p : points) {
+        check(p.x, lo, hi);
+        check(p.y, lo, hi);
+        check(p.z, lo, hi);
+        if constexpr (std::is_same_v<P, WeightedPoint3>) {
+            check(p.w, power_of_two(2 * w.min), power_of_two(2 * w.max + 2));
+        }
+    }
+    return in;
+}
+
 // Scaling by 2^k (weights by 2^2k) is exact here: every scaled value lands in the window, far
 // inside the normal range, so it keeps all its significant bits. The determinants are
 // homogeneous (degree 3 or 5, weights of degree 2), so the sign is unchanged.
@@ -103,11 +132,11 @@ inline WeightedPoint3 scaled(const WeightedPoint3& p, int k) {
 template <typename P, std::size_t N, typename Filter, typename Adaptive, typename Exact>
 Verdict run_after_filter(
     std::array<P, N> points, ExponentWindow window, Filter filter, Adaptive adaptive, Exact exact) {
-    ExponentRange range;
-    for (const P& p : points) {
-        range.add(p);
-    }
-    if (!range.within(window)) {
+    if (!within(points, window)) {
+        ExponentRange range;
+        for (const P& p : points) {
+            range.add(p);
+        }
         const std::optional<int> shift = range.shift_into(window);
         if (!shift) {
             return {exact(points), Stage::kExact};

@@ -36,14 +36,11 @@ struct Tally {
 
 // Only queries in the stage's exponent window (its precondition; insphere rescales the others).
 void check(const Query& q, Tally& tally) {
-    ExponentRange range;
-    for (const Point3& p : q) {
-        range.add(p);
-    }
-    if (!range.within(kLiftedAdaptiveWindow)) {
+    if (!within(q, kLiftedAdaptiveWindow)) {
         return;
     }
-    const std::optional<Sign> s = insphere_permanent(rows_of(q));
+    const LiftedRows rows = rows_of(q);
+    const std::optional<Sign> s = insphere_permanent(rows, insphere_row_permanent(rows));
     if (!s) {
         return;
     }

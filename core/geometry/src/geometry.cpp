@@ -52,6 +52,10 @@ VertexId Geometry::append_implicit(const GenericPoint3& exact,
         exact_.assign(points_.begin(), points_.end());
         plain_ = false;
     }
+    // Not a lattice any more, even when the rounded point is an integer point: the plain
+    // determinants would see the rounded coordinates, not the definition. widen_box keeps it off
+    // and remakes the static filters without the lattice's exact one.
+    lattice_ = false;
     points_.push_back(rounded);
     widen_box(rounded);
     exact_.push_back(exact);

@@ -13,6 +13,7 @@
 
 #include "cavity/core/geometry/counters.h"
 #include "cavity/core/geometry/geometry.h"
+#include "cavity/predicates/generic_point.h"
 #include "cavity/predicates/lattice.h"
 #include "cavity/predicates/orient3d.h"
 
@@ -68,6 +69,21 @@ TEST(Lattice, KeptUpToDateByTheAppends) {
     Geometry h = geometry_of(grid(3, 1));
     h.append_point({0.25, 0, 0});
     EXPECT_FALSE(h.lattice());
+}
+
+TEST(Lattice, LeftByAnImplicitPointEvenWithIntegerRounding) {
+    // From (1, 1, 1) towards (2, 2, 2) by 0 (the integer point itself) and by 2^-60 / 3 (no
+    // integer point, but it rounds to (1, 1, 1)): either way the geometry's tests must run on the
+    // definitions, which the lattice's plain determinants on rounded coordinates do not.
+    for (const double numerator : {0.0, 0x1p-60}) {
+        Geometry g = geometry_of(grid(3, 1));
+        const auto implicit =
+            predicates::segment_parameter_point({1, 1, 1}, {2, 2, 2}, numerator, 3.0);
+        ASSERT_TRUE(implicit.has_value());
+        g.append_implicit(*implicit, {1, 1, 1}, 100);
+        EXPECT_TRUE(g.has_implicit());
+        EXPECT_FALSE(g.lattice());
+    }
 }
 
 // Random tests on a coarse grid at the largest span (many exact ties, and the largest

@@ -60,18 +60,7 @@ public:
     /// Every point must lie in the box the filter was made for.
     [[gnu::always_inline]] int sign(
         const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) const {
-        const double det = detail::insphere_determinant(a.x - e.x,
-                                                        a.y - e.y,
-                                                        a.z - e.z,
-                                                        b.x - e.x,
-                                                        b.y - e.y,
-                                                        b.z - e.z,
-                                                        c.x - e.x,
-                                                        c.y - e.y,
-                                                        c.z - e.z,
-                                                        d.x - e.x,
-                                                        d.y - e.y,
-                                                        d.z - e.z);
+        const double det = detail::insphere_determinant(a, b, c, d, e);
         // One well-predicted branch; the sign itself is computed without branching on it.
         if (!(std::abs(det) > bound_)) {
             return 0;

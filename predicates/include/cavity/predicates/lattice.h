@@ -65,15 +65,7 @@ inline bool is_lattice_box(const Point3& lo, const Point3& hi) {
                                                        const Point3& b,
                                                        const Point3& c,
                                                        const Point3& d) {
-    const double det = detail::orient3d_determinant(a.x - d.x,
-                                                    a.y - d.y,
-                                                    a.z - d.z,
-                                                    b.x - d.x,
-                                                    b.y - d.y,
-                                                    b.z - d.z,
-                                                    c.x - d.x,
-                                                    c.y - d.y,
-                                                    c.z - d.z);
+    const double det = detail::orient3d_determinant(a, b, c, d);
     return static_cast<Sign>((det > 0.0) - (det < 0.0));
 }
 
@@ -81,18 +73,7 @@ inline bool is_lattice_box(const Point3& lo, const Point3& hi) {
 /// box (an unchecked precondition): the plain determinant, which is then exact.
 [[gnu::always_inline]] inline Sign insphere_on_lattice(
     const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
-    const double det = detail::insphere_determinant(a.x - e.x,
-                                                    a.y - e.y,
-                                                    a.z - e.z,
-                                                    b.x - e.x,
-                                                    b.y - e.y,
-                                                    b.z - e.z,
-                                                    c.x - e.x,
-                                                    c.y - e.y,
-                                                    c.z - e.z,
-                                                    d.x - e.x,
-                                                    d.y - e.y,
-                                                    d.z - e.z);
+    const double det = detail::insphere_determinant(a, b, c, d, e);
     return static_cast<Sign>((det > 0.0) - (det < 0.0));
 }
 

@@ -60,15 +60,7 @@ public:
                                     const Point3& b,
                                     const Point3& c,
                                     const Point3& d) const {
-        const double det = detail::orient3d_determinant(a.x - d.x,
-                                                        a.y - d.y,
-                                                        a.z - d.z,
-                                                        b.x - d.x,
-                                                        b.y - d.y,
-                                                        b.z - d.z,
-                                                        c.x - d.x,
-                                                        c.y - d.y,
-                                                        c.z - d.z);
+        const double det = detail::orient3d_determinant(a, b, c, d);
         // One well-predicted branch; the sign itself is computed without branching on it.
         if (!(std::abs(det) > bound_)) {
             return 0;

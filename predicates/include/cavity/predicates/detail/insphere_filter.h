@@ -65,6 +65,24 @@ inline constexpr double kInsphereMaxMax = 0x1p190;
     return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
 }
 
+/// insphere_determinant of the rounded differences of a..d to e: the evaluation of the static
+/// filter and of the lattice test (lattice.h), which take the differences for nothing else.
+[[gnu::always_inline]] inline double insphere_determinant(
+    const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
+    return insphere_determinant(a.x - e.x,
+                                a.y - e.y,
+                                a.z - e.z,
+                                b.x - e.x,
+                                b.y - e.y,
+                                b.z - e.z,
+                                c.x - e.x,
+                                c.y - e.y,
+                                c.z - e.z,
+                                d.x - e.x,
+                                d.y - e.y,
+                                d.z - e.z);
+}
+
 /// +1 or -1 when the sign of det[p-e, |p-e|^2] (p = a..d) is certified, 0 when undecided.
 [[gnu::always_inline]] inline int insphere_filter(
     const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {

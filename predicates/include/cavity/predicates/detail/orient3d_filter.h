@@ -44,6 +44,23 @@ inline constexpr double kOrient3dMaxMax = 0x1p330;
            cdz * (adx * bdy - ady * bdx);
 }
 
+/// orient3d_determinant of the rounded differences of a, b, c to d: the evaluation of the static
+/// filter and of the lattice test (lattice.h), which take the differences for nothing else.
+[[gnu::always_inline]] inline double orient3d_determinant(const Point3& a,
+                                                          const Point3& b,
+                                                          const Point3& c,
+                                                          const Point3& d) {
+    return orient3d_determinant(a.x - d.x,
+                                a.y - d.y,
+                                a.z - d.z,
+                                b.x - d.x,
+                                b.y - d.y,
+                                b.z - d.z,
+                                c.x - d.x,
+                                c.y - d.y,
+                                c.z - d.z);
+}
+
 /// +1 or -1 when the sign of det[a-d; b-d; c-d] is certified, 0 when the filter cannot decide.
 inline int orient3d_filter(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
     const double adx = a.x - d.x;
