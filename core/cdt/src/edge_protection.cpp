@@ -308,7 +308,8 @@ Protection protect_edges(Plc& plc, std::size_t max_points) {
         }
         const GenericPoint3 gp = generic_point(plc.points, e[0]);
         const GenericPoint3 gq = generic_point(plc.points, e[1]);
-        const double target = split_target(plc.points.points[e[0]], plc.points.points[e[1]], aim);
+        const SplitTarget target =
+            split_target(plc.points.points[e[0]], plc.points.points[e[1]], aim);
         const std::optional<GenericPoint3> m = split_point(gp, gq, target);
         if (!m) {
             throw Error(

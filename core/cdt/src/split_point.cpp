@@ -45,40 +45,64 @@ constexpr double kLowestAim = 0.2;
 /// The window around the aim searched for a point with double coordinates (protection_point).
 constexpr double kDoubleWindow = 0.05;
 
+/// How much of the way from the reference's projection to the edge of the interval that frees
+/// the piece of it a split may go: a margin for the doubles the interval is computed in, and so
+/// that the reference stays clearly outside both pieces' diametral balls.
+constexpr double kFreeingShare = 0.9;
+
 /// The finest dyadic parameters tried first for a double point with short coordinates, and how
-/// near the aim they must be: 2^-11 of the piece, which the grid at j = 10 always meets, since
-/// moving the split off the encroacher's projection leaves it encroaching a piece.
+/// near the aim they must be: 2^-11 of the piece, which the grid at j = 10 always meets.
 constexpr int kShortestBits = 10;
 constexpr double kShortWindow = 0x1p-11;
 
+SplitTarget around(double t) {
+    return {t, t - kDoubleWindow, t + kDoubleWindow};
+}
+
 }  // namespace
 
-double split_target(const Point3& p, const Point3& q, const std::optional<SplitAim>& aim) {
+SplitTarget split_target(const Point3& p, const Point3& q, const std::optional<SplitAim>& aim) {
     if (!aim) {
-        return 0.5;
+        return around(0.5);
     }
-    double t = 0.5;
     if (aim->shell_centre) {
         // The sphere about the shared input vertex c through the reference: the piece's ends are
         // at distances dp and dq from c along the segment.
         const Point3& c = *aim->shell_centre;
         const double dp = distance(p, c);
         const double dq = distance(q, c);
-        t = (distance(aim->reference, c) - dp) / (dq - dp);
-    } else {
-        const Point3 d = minus(q, p);
-        t = dot(minus(aim->reference, p), d) / dot(d, d);
+        const double t = (distance(aim->reference, c) - dp) / (dq - dp);
+        // Written so that NaN (a degenerate piece in doubles) takes the midpoint too.
+        return t >= kLowestAim && t <= 1 - kLowestAim ? around(t) : around(0.5);
     }
-    // Written so that NaN (a degenerate piece in doubles) takes the midpoint too.
+    // In units of |pq|, the reference w projects at s with squared height h2. A split at m leaves
+    // w outside the closed diametral balls of both pieces, (w - p).(w - m) > 0 and
+    // (w - m).(w - q) > 0, exactly when m is in (s - h2 / (1 - s), s + h2 / s): the projection is
+    // one such point but puts the new vertex nearest w, a feature of size h that later splits
+    // around w must resolve; the point of the interval nearest the midpoint keeps the pieces even
+    // and the new vertex as far from w as freeing the piece allows.
+    const Point3 d = minus(q, p);
+    const Point3 w = minus(aim->reference, p);
+    const double length2 = dot(d, d);
+    const double s = dot(w, d) / length2;
+    if (!(s > 0 && s < 1)) {
+        return around(0.5);
+    }
+    const double h2 = std::max(0.0, dot(w, w) / length2 - s * s);
+    const double lo = s - kFreeingShare * h2 / (1 - s);
+    const double hi = s + kFreeingShare * h2 / s;
+    const double t = std::clamp(0.5, lo, hi);
     if (!(t >= kLowestAim && t <= 1 - kLowestAim)) {
-        return 0.5;
+        return around(0.5);
     }
-    return t;
+    // A double point off the interval would leave w encroaching a piece: the search keeps to it.
+    return {t, std::max(lo, t - kDoubleWindow), std::min(hi, t + kDoubleWindow)};
 }
 
 std::optional<GenericPoint3> split_point(const GenericPoint3& p,
                                          const GenericPoint3& q,
-                                         double target) {
+                                         const SplitTarget& aim) {
+    const double target = aim.target;
     const auto* pp = std::get_if<Point3>(&p);
     const auto* pq = std::get_if<Point3>(&q);
     if (pp != nullptr && pq != nullptr) {
@@ -88,7 +112,8 @@ std::optional<GenericPoint3> split_point(const GenericPoint3& p,
         for (int j = 1; j <= kShortestBits; ++j) {
             const double steps = std::ldexp(1.0, j);
             const double k = std::nearbyint(target * steps);
-            if (k <= 0 || k >= steps || std::abs(k / steps - target) > kShortWindow) {
+            if (k <= 0 || k >= steps || std::abs(k / steps - target) > kShortWindow ||
+                k / steps < aim.lo || k / steps > aim.hi) {
                 continue;
             }
             const auto s = predicates::segment_parameter_point(*pp, *pq, k, steps);
@@ -96,8 +121,7 @@ std::optional<GenericPoint3> split_point(const GenericPoint3& p,
                 return GenericPoint3(rounded_point(*s));
             }
         }
-        if (const auto d = protection_point(
-                *pp, *pq, target, target - kDoubleWindow, target + kDoubleWindow)) {
+        if (const auto d = protection_point(*pp, *pq, target, aim.lo, aim.hi)) {
             return GenericPoint3(*d);
         }
     }
@@ -127,7 +151,11 @@ std::optional<GenericPoint3> split_point(const GenericPoint3& p,
     double d = std::max(dp, dq);
     double lo = np * (d / dp);
     double hi = nq * (d / dq);
-    while (std::abs(hi - lo) < kGridSteps && 2 * d <= kMaxDenominator) {
+    // Fine enough that the window holds two grid points, so that the split stays where it frees
+    // the piece of its reference.
+    const double window = aim.hi - aim.lo;
+    while ((std::abs(hi - lo) < kGridSteps || std::abs(hi - lo) * window < 2) &&
+           2 * d <= kMaxDenominator) {
         d *= 2;
         lo *= 2;
         hi *= 2;
@@ -137,7 +165,15 @@ std::optional<GenericPoint3> split_point(const GenericPoint3& p,
     }
     const double first = std::min(lo, hi) + 1;
     const double last = std::max(lo, hi) - 1;
-    double n = std::clamp(std::nearbyint(lo + target * (hi - lo)), first, last);
+    double n = std::nearbyint(lo + target * (hi - lo));
+    const double w0 = lo + aim.lo * (hi - lo);
+    const double w1 = lo + aim.hi * (hi - lo);
+    const double inside_lo = std::ceil(std::min(w0, w1));
+    const double inside_hi = std::floor(std::max(w0, w1));
+    if (inside_lo <= inside_hi) {
+        n = std::clamp(n, inside_lo, inside_hi);
+    }
+    n = std::clamp(n, first, last);
     // Lowest terms keep the denominators of later splits small.
     while (d > 1 && std::fmod(n, 2.0) == 0) {
         n /= 2;

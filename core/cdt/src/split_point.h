@@ -4,12 +4,15 @@
 
 #include "cavity/predicates/generic_point.h"
 
-/// Where edge protection splits a missing piece pq of a PLC segment (Si & Shewchuk 2014's
-/// reference point rule, as TetGen's segment recovery uses it): at the projection of the vertex
-/// that encroaches most upon pq, or, when that vertex lies on another segment from a shared input
-/// vertex c, on the sphere about c through it (concentric shells, so that splits near a small
-/// input angle do not cascade); at the midpoint when the aim falls near an end. Only the count of
-/// points depends on the choice: every point made is exactly on the segment.
+/// Where edge protection splits a missing piece pq of a PLC segment. After Si & Shewchuk 2014's
+/// reference point rule, as TetGen's segment recovery uses it, the vertex w that encroaches most
+/// upon pq aims the split, so that w encroaches neither piece; of the points that do that (the
+/// projection of w is one), the one nearest the midpoint, which keeps the pieces even and the new
+/// vertex as far from w as freeing pq allows (a split at the projection makes a feature as small
+/// as w's height, which cascades). When w lies on another segment from a shared input vertex c:
+/// on the sphere about c through w (concentric shells, so that splits near a small input angle do
+/// not cascade). At the midpoint when the aim falls near an end. Only the count of points depends
+/// on the choice: every point made is exactly on the segment.
 namespace cavity::core {
 
 using predicates::GenericPoint3;
@@ -21,20 +24,30 @@ struct SplitAim {
     std::optional<Point3> shell_centre;
 };
 
-/// The parameter t of p + t (q - p) where the split of pq aims, computed in doubles (it needs no
-/// exactness): 1/2 without an aim, else the aim's when it lies in [0.2, 0.8], else 1/2.
-double split_target(const Point3& p, const Point3& q, const std::optional<SplitAim>& aim);
+/// Where the split of a piece pq aims, as parameters t of p + t (q - p): `target`, and the window
+/// [lo, hi] around it in which a point with double coordinates may stand in for it.
+struct SplitTarget {
+    double target;
+    double lo;
+    double hi;
+};
+
+/// Where the split of pq aims, computed in doubles (it needs no exactness): without an aim, the
+/// midpoint; on a shell, the sphere's parameter; else the parameter nearest 1/2 of those that
+/// leave the reference outside both pieces' diametral balls (its projection is one), with a
+/// window kept inside them. The midpoint whenever the aim falls outside [0.2, 0.8].
+SplitTarget split_target(const Point3& p, const Point3& q, const std::optional<SplitAim>& aim);
 
 /// A point exactly on the open piece pq (p, q as protect_edges made them: input points, double
-/// points on a segment, or SegmentParameterPoints of one base edge) near parameter `target` of pq:
-/// a point with double coordinates within 1/20 of the piece when the ends are doubles and one is
+/// points on a segment, or SegmentParameterPoints of one base edge) near `target.target` of pq: a
+/// point with double coordinates in [target.lo, target.hi] when the ends are doubles and one is
 /// there (first the one at the coarsest dyadic parameter k / 2^j, j <= 10, within 2^-11 of the
 /// target, for short coordinates: the midpoint when the target is 1/2 and it is a double), else the
 /// SegmentParameterPoint of the base edge nearest the target on a dyadic grid at least 1024 times
-/// finer than the piece. nullopt when the base parameters would need a denominator beyond 2^53 (the
-/// piece is 2^-52 of its base edge).
+/// finer than the piece and with two points in the window, kept in the window. nullopt when the
+/// base parameters would need a denominator beyond 2^53 (the piece is 2^-52 of its base edge).
 std::optional<GenericPoint3> split_point(const GenericPoint3& p,
                                          const GenericPoint3& q,
-                                         double target);
+                                         const SplitTarget& target);
 
 }  // namespace cavity::core

@@ -3,6 +3,7 @@
 // on their exact coordinates, and the new points' perturbation keys are their indices.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <variant>
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "../../../core/cdt/src/exact_plane.h"
+#include "../../../core/cdt/src/split_point.h"
 #include "cavity/core/cdt/cdt.h"
 #include "cavity/core/cdt/cdt_carve.h"
 #include "cavity/core/cdt/cdt_validate.h"
@@ -164,6 +166,72 @@ TEST(SteinerProtection, RoundingOntoAnInputPointIsNoDuplicate) {
             predicates::Sign::kNeg);
     }
     EXPECT_TRUE(has_m);
+}
+
+/// The point at parameter t of pq, exactly.
+ExactPoint at(const Point3& p, const Point3& q, double t) {
+    const ExactPoint a = exact_point(p);
+    const ExactPoint d = minus(exact_point(q), a);
+    const Rational r(t);
+    return {a[0] + r * d[0], a[1] + r * d[1], a[2] + r * d[2]};
+}
+
+/// True when w is outside the closed diametral ball of ab (angle a-w-b acute).
+bool outside_ball(const ExactPoint& w, const ExactPoint& a, const ExactPoint& b) {
+    return dot(minus(a, w), minus(b, w)) > 0;
+}
+
+/// The split frees the piece of the vertex that aims it: a split anywhere in its window leaves
+/// the reference outside both pieces' diametral balls, and of those splits it takes the one
+/// nearest the midpoint, not the projection (which makes the new vertex as near the reference
+/// as can be).
+TEST(SplitTarget, FreesThePieceOfItsReferenceNearestTheMidpoint) {
+    const Point3 p{0.1, 0.2, 0.3};
+    const Point3 q{9.7, 1.3, 0.7};
+    // Flat encroachers near the segment at different parameters, and one high in the ball.
+    const std::vector<Point3> references{
+        {3.1, 0.6, 0.3}, {4.95, 0.8, 0.55}, {6.7, 1.2, 0.4}, {3.9, 2.9, 0.6}};
+    for (const Point3& w : references) {
+        const SplitTarget s = split_target(p, q, SplitAim{w, std::nullopt});
+        ASSERT_LE(s.lo, s.target);
+        ASSERT_LE(s.target, s.hi);
+        const ExactPoint ew = exact_point(w);
+        ASSERT_FALSE(outside_ball(ew, exact_point(p), exact_point(q)));  // it encroaches pq
+        for (const double t : {s.lo, s.target, s.hi}) {
+            const ExactPoint m = at(p, q, t);
+            EXPECT_TRUE(outside_ball(ew, exact_point(p), m)) << t;
+            EXPECT_TRUE(outside_ball(ew, m, exact_point(q))) << t;
+        }
+        // Nearer the midpoint than the projection, never past it.
+        const double projection = [&] {
+            const double dx = q.x - p.x, dy = q.y - p.y, dz = q.z - p.z;
+            return ((w.x - p.x) * dx + (w.y - p.y) * dy + (w.z - p.z) * dz) /
+                   (dx * dx + dy * dy + dz * dz);
+        }();
+        EXPECT_LE(std::abs(s.target - 0.5), std::abs(projection - 0.5));
+        EXPECT_NE(s.target, projection);
+    }
+    // High in the ball the midpoint already frees the piece.
+    EXPECT_EQ(split_target(p, q, SplitAim{references.back(), std::nullopt}).target, 0.5);
+    // Without a reference: the midpoint.
+    EXPECT_EQ(split_target(p, q, std::nullopt).target, 0.5);
+}
+
+/// The split keeps to the window, whether a double point or an implicit one makes it: on a
+/// decimal segment its parameter lies in [lo, hi].
+TEST(SplitTarget, DoublePointsStayInTheWindow) {
+    const Point3 p{0.1, 0.2, 0.3};
+    const Point3 q{9.7, 1.3, 0.7};
+    const SplitTarget s = split_target(p, q, SplitAim{{3.1, 0.6, 0.3}, std::nullopt});
+    const auto m = split_point(GenericPoint3(p), GenericPoint3(q), s);
+    ASSERT_TRUE(m);
+    const ExactPoint em = exact_point(*m);
+    const ExactPoint a = exact_point(p);
+    const ExactPoint d = minus(exact_point(q), a);
+    const Rational t = dot(minus(em, a), d) / dot(d, d);
+    EXPECT_TRUE(is_zero(cross(minus(em, a), d)));  // exactly on the segment
+    EXPECT_GE(t, Rational(s.lo));
+    EXPECT_LE(t, Rational(s.hi));
 }
 
 }  // namespace
