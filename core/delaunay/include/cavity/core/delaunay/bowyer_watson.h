@@ -77,7 +77,10 @@ public:
 
     /// True when u conflicts with tetrahedron t (is in its perturbed open circumball, or for a
     /// ghost, in the outer halfspace of its hull triangle).
-    bool conflicts(TetId t, VertexId u) {
+    /// Inlined, with Digger::conflicts, into the cavity search: GCC kept the test out of line, and
+    /// a call per test (46 per point on a uniform cube) spilled and reloaded the search's state;
+    /// inlining it and add() cut the triangulation by 5% (callgrind, cube 10^5).
+    [[gnu::always_inline]] bool conflicts(TetId t, VertexId u) {
         const TetVertices& v = storage_.vertices(t);
         return is_ghost(v) ? geometry_.conflicts_ghost(v, u, bootstrap_, tally())
                            : geometry_.conflicts_solid(v, u, tally());
@@ -165,7 +168,7 @@ private:
 
         static bool in_cavity(TetId) { return false; }
 
-        bool conflicts(TetId t) {
+        [[gnu::always_inline]] bool conflicts(TetId t) {
             if constexpr (Observer::kCounting) {
                 ++engine.tally().dig_tests;
             }
@@ -181,7 +184,7 @@ private:
         }
     };
 
-    TetId add(const TetVertices& v, std::uint64_t step) {
+    [[gnu::always_inline]] TetId add(const TetVertices& v, std::uint64_t step) {
         const TetId t = storage_.add_tetrahedron(v);
         observer_.on_tet_created(t, v, step);
         if constexpr (Observer::kCounting) {
