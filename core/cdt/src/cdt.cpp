@@ -25,10 +25,9 @@ std::string edge_list(const Plc& plc, const std::vector<Edge>& edges) {
     return s;
 }
 
-/// The Delaunay triangulation of the PLC's points, refused when two coincide or a PLC edge is
-/// missing from it (the flip-based construction needs edge protection).
-DelaunayTriangulation protected_delaunay(const Plc& plc) {
-    DelaunayTriangulation dt = plc_delaunay(plc);
+/// `dt`, the Delaunay triangulation of the PLC's points, refused when a PLC edge is missing from it
+/// (the flip-based construction needs edge protection) or the PLC is invalid.
+DelaunayTriangulation protected_delaunay(const Plc& plc, DelaunayTriangulation dt) {
     const std::vector<std::array<std::uint32_t, 4>> tets = dt.tets();
     const std::vector<Edge> missing = unprotected_edges(plc, tets);
     if (!missing.empty()) {
@@ -45,13 +44,25 @@ DelaunayTriangulation protected_delaunay(const Plc& plc) {
 
 }  // namespace
 
-LiveCdt::LiveCdt(Plc plc, const CdtOptions& options)
-    : protection_(options.protect ? protect_edges(plc, options.max_protection_points)
-                                  : Protection{})
-    , plc_(std::move(plc))
+LiveCdt::Start LiveCdt::start(Plc plc, const CdtOptions& options) {
+    if (!options.protect) {
+        DelaunayTriangulation dt = plc_delaunay(plc);
+        return {Protection{}, std::move(plc), std::move(dt)};
+    }
+    // Protection's own live triangulation: building the same one again from scratch cost as much
+    // as the protection's insertions.
+    ProtectedDelaunay p = protect_edges_live(plc, options.max_protection_points);
+    return {std::move(p.protection), std::move(plc), std::move(p.triangulation)};
+}
+
+LiveCdt::LiveCdt(Plc plc, const CdtOptions& options) : LiveCdt(start(std::move(plc), options)) {}
+
+LiveCdt::LiveCdt(Start start)
+    : protection_(std::move(start.protection))
+    , plc_(std::move(start.plc))
     , geometry_(geometry_by_index(plc_.points)) {
     // The live triangulation's own complex, renamed to the PLC's point indices: no facet matching.
-    storage_ = protected_delaunay(plc_).release_by_index();
+    storage_ = protected_delaunay(plc_, std::move(start.delaunay)).release_by_index();
     ConstrainedFaces constrained;
     for (std::size_t f = 0; f < plc_.facets.size(); ++f) {
         for (const auto& g :

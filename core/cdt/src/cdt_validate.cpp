@@ -190,11 +190,7 @@ private:
 };
 
 /// True when mesh triangle g lies in the facet's plane with its centroid in the facet's region.
-bool in_facet(const Plc& plc,
-              const PlcFacet& facet,
-              const ExactPlane& plane,
-              const FacetSide& side,
-              const Triangle& g) {
+bool in_facet(const Plc& plc, const FacetRegion& region, const FacetSide& side, const Triangle& g) {
     const ExactPoints pts{plc.points};
     if (side(g[0]) != Sign::kZero || side(g[1]) != Sign::kZero || side(g[2]) != Sign::kZero) {
         return false;
@@ -204,7 +200,7 @@ bool in_facet(const Plc& plc,
     const ExactPoint c = exact_point(pts[g[2]]);
     const ExactPoint centroid{
         (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
-    return in_facet_region(plc, facet, plane, centroid);
+    return region.contains(centroid);
 }
 
 /// A polygon that is one triangle without hole points, when the mesh has that triangle: then it is
@@ -237,6 +233,7 @@ std::optional<Triangle> facet_triangle(const PlcFacet& facet, const BoxedMesh& m
 std::optional<std::vector<Triangle>> covering_faces(const Plc& plc,
                                                     const PlcFacet& facet,
                                                     const ExactPlane& plane,
+                                                    const FacetRegion& region,
                                                     const FacetSide& side,
                                                     const BoxedMesh& mesh,
                                                     VertexTriangles& around) {
@@ -256,7 +253,7 @@ std::optional<std::vector<Triangle>> covering_faces(const Plc& plc,
         frontier.pop_back();
         for (std::uint32_t k : around.of(v)) {
             const Triangle& g = mesh.triangles[k];
-            if (!around.first_visit_of_triangle(k) || !in_facet(plc, facet, plane, side, g)) {
+            if (!around.first_visit_of_triangle(k) || !in_facet(plc, region, side, g)) {
                 continue;
             }
             faces.push_back(g);
@@ -303,8 +300,9 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         return faces;
     }
     const FacetSide side(plc, facet, *plane);
+    const FacetRegion region(plc, facet, *plane);
     if (!carved) {
-        if (auto found = covering_faces(plc, facet, *plane, side, mesh, around)) {
+        if (auto found = covering_faces(plc, facet, *plane, region, side, mesh, around)) {
             return std::move(*found);
         }
     }
@@ -322,7 +320,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         for (std::size_t i = 0; i < 4; ++i) {
             for (std::size_t j = 0; j < 4; ++j) {
                 if (s[i] < 0 && s[j] > 0) {
-                    if (crosses_facet_region(plc, facet, *plane, pts[t[i]], pts[t[j]])) {
+                    if (crosses_facet_region(plc, facet, *plane, region, pts[t[i]], pts[t[j]])) {
                         report.add(tet_name(t, plc.points.index_base) + " crosses " + name);
                     }
                     i = j = 4;
@@ -337,7 +335,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         if (!box.meets(mesh.triangle_boxes[k])) {
             continue;
         }
-        if (in_facet(plc, facet, *plane, side, g)) {
+        if (in_facet(plc, region, side, g)) {
             faces.push_back(g);
             covered += triangle_area2(*plane,
                                       exact_point(plc.points, g[0]),

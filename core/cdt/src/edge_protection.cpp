@@ -187,6 +187,8 @@ public:
         vertex_.push_back(static_cast<VertexId>(dt_.geometry().size() - 1));
     }
 
+    DelaunayTriangulation release() && { return std::move(dt_); }
+
     /// The vertex that encroaches most upon edge pq (in the closed diametral ball, the largest
     /// angle p-w-q) among the vertices of the stars of p and q, as a point index; nullopt when
     /// none does. Decided on rounded coordinates: it only aims the split.
@@ -232,6 +234,10 @@ private:
 }  // namespace
 
 Protection protect_edges(Plc& plc, std::size_t max_points) {
+    return protect_edges_live(plc, max_points).protection;
+}
+
+ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
     Protection result;
     result.rounds = 1;
     const auto base = static_cast<std::uint32_t>(plc.points.index_base);
@@ -239,7 +245,7 @@ Protection protect_edges(Plc& plc, std::size_t max_points) {
     DelaunayTriangulation dt = plc_delaunay(plc);
     const std::vector<Edge> missing = unprotected_edges(plc, dt.tets());
     if (missing.empty()) {
-        return result;
+        return {result, std::move(dt)};
     }
     // Splitting never protects an edge that a point lies on or another edge crosses; the pieces
     // of the others inherit the check.
@@ -336,7 +342,7 @@ Protection protect_edges(Plc& plc, std::size_t max_points) {
         pieces.push_back({id, e[1]});
     }
     apply_splits(plc, split_at);
-    return result;
+    return {result, std::move(mesh).release()};
 }
 
 }  // namespace cavity::core

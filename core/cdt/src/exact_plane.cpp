@@ -11,12 +11,6 @@ namespace cavity::core {
 
 namespace {
 
-/// A point of the facet's plane, projected one-to-one by dropping one coordinate.
-struct Point2 {
-    Rational u;
-    Rational v;
-};
-
 Point2 project(const ExactPoint& p, int drop) {
     const std::size_t u = drop == 0 ? 1 : 0;
     const std::size_t v = drop == 2 ? 1 : 2;
@@ -45,16 +39,25 @@ bool on_segment(const Point2& p, const Point2& q, const Point2& x) {
 
 LoopPosition position(const std::vector<Point2>& loop, const Point2& x) {
     bool inside = false;
+    // Only the sides whose v-range holds x.v can hold x or cross the ray, so comparisons of v
+    // (cheap) pick the few sides that need an orientation (a dozen GMP operations).
     for (std::size_t i = 0; i < loop.size(); ++i) {
         const Point2& p = loop[i];
         const Point2& q = loop[(i + 1) % loop.size()];
-        if (on_segment(p, q, x)) {
+        const bool p_above = p.v > x.v;
+        const bool q_above = q.v > x.v;
+        if (p_above != q_above) {
+            const Rational o = orient2(p, q, x);
+            if (o == 0 && (x.u - p.u) * (x.u - q.u) <= 0) {
+                return LoopPosition::kOnBoundary;
+            }
+            // Crossing number along the ray from x in direction +u; the half-open rule on v
+            // counts a corner on the ray once.
+            if ((q.v > p.v) == (o > 0)) {
+                inside = !inside;
+            }
+        } else if (!p_above && (p.v == x.v || q.v == x.v) && on_segment(p, q, x)) {
             return LoopPosition::kOnBoundary;
-        }
-        // Crossing number along the ray from x in direction +u; the half-open rule on v counts a
-        // corner on the ray once.
-        if ((p.v > x.v) != (q.v > x.v) && ((q.v > p.v) == (orient2(p, q, x) > 0))) {
-            inside = !inside;
         }
     }
     return inside ? LoopPosition::kInside : LoopPosition::kOutside;
@@ -308,29 +311,41 @@ ExactPoint ExactPlane::crossing(const ExactPoint& ep, const ExactPoint& eq) cons
     return {ep[0] + t * (eq[0] - ep[0]), ep[1] + t * (eq[1] - ep[1]), ep[2] + t * (eq[2] - ep[2])};
 }
 
+FacetRegion::FacetRegion(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane)
+    : plc_(plc), facet_(facet), drop_(plane.dropped_axis()) {}
+
+const FacetRegion::Projected& FacetRegion::projected() const {
+    if (!projected_) {
+        Projected made;
+        for (const auto& loop : facet_.loops) {
+            made.loops.push_back(project_loop(plc_, loop, drop_));
+        }
+        for (const Point3& h : facet_.holes) {
+            made.hole_faces.push_back(containing_loops(made.loops, project(exact_point(h), drop_)));
+        }
+        projected_.emplace(std::move(made));
+    }
+    return *projected_;
+}
+
+bool FacetRegion::contains(const ExactPoint& x) const {
+    const Projected& p = projected();
+    const std::vector<bool> face = containing_loops(p.loops, project(x, drop_));
+    return std::find(face.begin(), face.end(), true) != face.end() &&
+           std::find(p.hole_faces.begin(), p.hole_faces.end(), face) == p.hole_faces.end();
+}
+
 bool in_facet_region(const Plc& plc,
                      const PlcFacet& facet,
                      const ExactPlane& plane,
                      const ExactPoint& x) {
-    std::vector<std::vector<Point2>> loops;
-    for (const auto& loop : facet.loops) {
-        loops.push_back(project_loop(plc, loop, plane.dropped_axis()));
-    }
-    const std::vector<bool> face = containing_loops(loops, project(x, plane.dropped_axis()));
-    if (std::find(face.begin(), face.end(), true) == face.end()) {
-        return false;
-    }
-    for (const Point3& h : facet.holes) {
-        if (containing_loops(loops, project(exact_point(h), plane.dropped_axis())) == face) {
-            return false;
-        }
-    }
-    return true;
+    return FacetRegion(plc, facet, plane).contains(x);
 }
 
 bool crosses_facet_region(const Plc& plc,
                           const PlcFacet& facet,
                           const ExactPlane& plane,
+                          const FacetRegion& region,
                           const predicates::GenericPoint3& p,
                           const predicates::GenericPoint3& q) {
     if (facet.loops.size() == 1 && facet.loops[0].size() == 3 && facet.holes.empty()) {
@@ -341,7 +356,7 @@ bool crosses_facet_region(const Plc& plc,
                predicates::orient3d(p, q, corner(1), corner(2)) == first &&
                predicates::orient3d(p, q, corner(2), corner(0)) == first;
     }
-    return in_facet_region(plc, facet, plane, plane.crossing(exact_point(p), exact_point(q)));
+    return region.contains(plane.crossing(exact_point(p), exact_point(q)));
 }
 
 Rational facet_region_area2(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane) {

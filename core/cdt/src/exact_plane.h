@@ -90,10 +90,43 @@ private:
     int drop_ = 2;
 };
 
-/// True when x (a point of the facet's plane, not on any loop side) lies in the facet's region, by
-/// TetGen's rule (see PlcFacet): x is inside at least one loop, and no hole point of the facet lies
-/// in the same face of the loops' arrangement, i.e. no hole point is inside exactly the same loops
-/// as x. Exact, in the projection that drops `plane.dropped_axis()`.
+/// A point of a facet's plane, projected one-to-one by dropping one coordinate.
+struct Point2 {
+    Rational u;
+    Rational v;
+};
+
+/// A facet's region made ready for many point queries: its loops projected to rationals and the
+/// faces of the loops' arrangement that hold its hole points, made on the first query (a
+/// triangle's questions are mostly answered by orientations alone) and kept. Converting a loop's
+/// implicit corners costs dozens of GMP operations each, so projecting the loops per query made
+/// polygon insertion and the validator quadratic in the length of a loop split by edge
+/// protection. Holds references to plc and facet.
+class FacetRegion {
+public:
+    FacetRegion(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane);
+
+    /// True when x (a point of the facet's plane, not on any loop side) lies in the region, by
+    /// TetGen's rule (see PlcFacet): x is inside at least one loop, and no hole point of the facet
+    /// lies in the same face of the loops' arrangement, i.e. no hole point is inside exactly the
+    /// same loops as x. Exact, in the projection that drops the plane's dropped_axis().
+    bool contains(const ExactPoint& x) const;
+
+private:
+    struct Projected {
+        std::vector<std::vector<Point2>> loops;
+        std::vector<std::vector<bool>> hole_faces;  ///< per hole point, the loops it is inside
+    };
+
+    const Projected& projected() const;
+
+    const Plc& plc_;
+    const PlcFacet& facet_;
+    int drop_;
+    mutable std::optional<Projected> projected_;  ///< or not yet
+};
+
+/// FacetRegion(plc, facet, plane).contains(x), for a single question.
 bool in_facet_region(const Plc& plc,
                      const PlcFacet& facet,
                      const ExactPlane& plane,
@@ -102,10 +135,12 @@ bool in_facet_region(const Plc& plc,
 /// True when segment pq, whose ends lie strictly on opposite sides of the facet's plane, crosses
 /// it inside the facet's region. For a triangle without hole points by three exact orientations
 /// (the crossing is inside the open triangle exactly when pq turns the same way, strictly,
-/// around its three sides), without rationals; otherwise at the rational crossing point.
+/// around its three sides), without rationals; otherwise at the rational crossing point, asked of
+/// `region` (the facet's).
 bool crosses_facet_region(const Plc& plc,
                           const PlcFacet& facet,
                           const ExactPlane& plane,
+                          const FacetRegion& region,
                           const predicates::GenericPoint3& p,
                           const predicates::GenericPoint3& q);
 

@@ -282,6 +282,7 @@ std::vector<std::string> plc_violations(
                        ? 0
                        : static_cast<int>(plane->side(generic_point(plc.points, v)));
         };
+        const FacetRegion region(plc, facet, *plane);
         std::vector<std::size_t> near = grid.near(box, f);
         std::sort(near.begin(), near.end());
         for (std::size_t i : near) {
@@ -310,11 +311,11 @@ std::vector<std::string> plc_violations(
                 const ExactPoint a = exact_point(p);
                 const ExactPoint b = exact_point(q);
                 const ExactPoint mid{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-                if (in_facet_region(plc, facet, *plane, mid)) {
+                if (region.contains(mid)) {
                     report.add(edge_name(plc, e.edge) + ", a side of " + facet_name(plc, *g) +
                                ", lies inside it: the two coplanar facets overlap");
                 }
-            } else if (sp * sq < 0 && crosses_facet_region(plc, facet, *plane, p, q)) {
+            } else if (sp * sq < 0 && crosses_facet_region(plc, facet, *plane, region, p, q)) {
                 report.add(edge_name(plc, e.edge) +
                            (e.owners.empty()
                                 ? " (a segment)"

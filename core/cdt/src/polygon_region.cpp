@@ -87,14 +87,18 @@ TetId tet_with_edge(const ArrayStorage& storage,
 }  // namespace
 
 FacetGeometry::FacetGeometry(const Geometry& geometry, const Plc& plc, const PlcFacet& facet)
-    : geometry_(geometry), plc_(plc), facet_(facet), plane_([&] {
+    : geometry_(geometry)
+    , plc_(plc)
+    , facet_(facet)
+    , plane_([&] {
         const auto plane = ExactPlane::of_facet(plc, facet);
         if (!plane) {
             throw Error(
                 located_message(plc.source, facet.line, "the facet's corners are all collinear"));
         }
         return *plane;
-    }()) {
+    }())
+    , region_(plc, facet, plane_) {
     for (const auto& loop : facet.loops) {
         for (std::size_t i = 0; i < loop.size(); ++i) {
             const VertexId a = loop[i];
@@ -143,8 +147,7 @@ FacetGeometry::Contact FacetGeometry::contact(const TetVertices& t) {
             if (side(a) < 0 && side(b) > 0) {
                 const ExactPoint x = plane_.crossing(exact_point(geometry_.generic(a)),
                                                      exact_point(geometry_.generic(b)));
-                return in_facet_region(plc_, facet_, plane_, x) ? Contact::kCrosses
-                                                                : Contact::kNone;
+                return region_.contains(x) ? Contact::kCrosses : Contact::kNone;
             }
         }
     }
@@ -180,7 +183,7 @@ bool FacetGeometry::face_in_region(std::span<const VertexId> on) {
     for (auto& c : centroid) {
         c /= static_cast<int>(on.size());
     }
-    return in_facet_region(plc_, facet_, plane_, centroid);
+    return region_.contains(centroid);
 }
 
 PolygonRegion find_polygon_region(const ArrayStorage& storage, FacetGeometry& facet) {

@@ -77,6 +77,7 @@ private:
     const Plc& plc_;
     const PlcFacet& facet_;
     ExactPlane plane_;
+    FacetRegion region_;
     std::map<VertexId, std::pair<int, Rational>> side_;
     std::vector<std::array<VertexId, 2>> sides_;
     std::set<std::array<VertexId, 2>> side_set_;

@@ -129,6 +129,17 @@ private:
         std::vector<std::array<HalfFacet, 2>> around;
     };
 
+    /// What construction starts from: the PLC after protection, with the Delaunay triangulation of
+    /// its points.
+    struct Start {
+        Protection protection;
+        Plc plc;
+        DelaunayTriangulation delaunay;
+    };
+
+    static Start start(Plc plc, const CdtOptions& options);
+    explicit LiveCdt(Start start);
+
     struct PolygonTriangle {
         Triangle v;
         std::uint32_t facet;

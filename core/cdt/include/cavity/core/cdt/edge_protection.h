@@ -86,4 +86,13 @@ std::optional<Point3> protection_point(
 /// insertions, or when a piece would need a parameter finer than 2^-53.
 Protection protect_edges(Plc& plc, std::size_t max_points);
 
+/// protect_edges, with the live Delaunay triangulation it inserted into: the triangulation of
+/// every point of the protected PLC (input index = point index), the CDT's start.
+struct ProtectedDelaunay {
+    Protection protection;
+    DelaunayTriangulation triangulation;
+};
+
+ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points);
+
 }  // namespace cavity::core
