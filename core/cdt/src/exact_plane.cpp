@@ -335,13 +335,6 @@ bool FacetRegion::contains(const ExactPoint& x) const {
            std::find(p.hole_faces.begin(), p.hole_faces.end(), face) == p.hole_faces.end();
 }
 
-bool in_facet_region(const Plc& plc,
-                     const PlcFacet& facet,
-                     const ExactPlane& plane,
-                     const ExactPoint& x) {
-    return FacetRegion(plc, facet, plane).contains(x);
-}
-
 bool crosses_facet_region(const Plc& plc,
                           const PlcFacet& facet,
                           const ExactPlane& plane,

@@ -126,12 +126,6 @@ private:
     mutable std::optional<Projected> projected_;  ///< or not yet
 };
 
-/// FacetRegion(plc, facet, plane).contains(x), for a single question.
-bool in_facet_region(const Plc& plc,
-                     const PlcFacet& facet,
-                     const ExactPlane& plane,
-                     const ExactPoint& x);
-
 /// True when segment pq, whose ends lie strictly on opposite sides of the facet's plane, crosses
 /// it inside the facet's region. For a triangle without hole points by three exact orientations
 /// (the crossing is inside the open triangle exactly when pq turns the same way, strictly,

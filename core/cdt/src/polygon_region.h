@@ -23,10 +23,10 @@ namespace cavity::core {
 /// One facet of a PLC against the vertices of the complex, exactly. Left vertices lie on the
 /// negative side of the facet's plane h, right vertices on the positive side.
 ///
-/// Every test below asks in_facet_region about a single point that cannot lie on a loop side: the
-/// loop sides are edges of the complex (edge protection), and simplices of a complex do not cross,
-/// so the relative interior of a simplex lying in h is inside or outside the region as a whole,
-/// unless the simplex is a loop side or corner itself (then it is on the boundary).
+/// Every test below asks the facet's FacetRegion about a single point that cannot lie on a loop
+/// side: the loop sides are edges of the complex (edge protection), and simplices of a complex do
+/// not cross, so the relative interior of a simplex lying in h is inside or outside the region as a
+/// whole, unless the simplex is a loop side or corner itself (then it is on the boundary).
 class FacetGeometry {
 public:
     FacetGeometry(const Geometry& geometry, const Plc& plc, const PlcFacet& facet);

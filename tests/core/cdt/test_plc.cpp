@@ -363,7 +363,7 @@ struct NestedSquares {
     }
 
     bool in(double x, double y) const {
-        return in_facet_region(plc, facet, plane, exact_point({x, y, 0}));
+        return FacetRegion(plc, facet, plane).contains(exact_point({x, y, 0}));
     }
 
     Rational area2() const { return facet_region_area2(plc, facet, plane); }
