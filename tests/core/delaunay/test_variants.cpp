@@ -2,6 +2,7 @@
 // is valid (checked exactly by core::validate) and identical across variants, because the
 // symbolic perturbation makes the triangulation unique.
 
+#include <cstdint>
 #include <set>
 #include <string>
 #include <string_view>
@@ -25,46 +26,53 @@ using core::StorageKind;
 
 class Variants : public ::testing::TestWithParam<CorpusCase> {};
 
-TEST_P(Variants, ValidAndIdenticalForEveryOrderLocatorAndStorage) {
-    const CorpusCase& c = GetParam();
-    std::vector<std::array<std::uint32_t, 4>> reference;
-    // Every row of the name tables: a new variant is tested as soon as it has a name.
+/// Triangulates the case's points in every row of the name tables (a new variant is tested as
+/// soon as it has a name), the orders seeded with `seed`, and hands each result to `check` with
+/// the variant's name.
+template <class Check>
+void for_each_variant(const CorpusCase& c, std::uint64_t seed, bool count, Check&& check) {
     for (const auto& [order_name, order, order_help] : core::kOrderKinds) {
         for (const auto& [locate_name, locate, locate_help] : core::kLocateKinds) {
             for (const auto& [storage_name, storage, storage_help] : core::kStorageKinds) {
                 core::OrderOptions order_options;
                 order_options.kind = order;
-                order_options.seed = 11;
+                order_options.seed = seed;
                 const auto sequence =
                     core::make_insertion_order(c.points.points, order_options).sequence;
                 core::TriangulateOptions options;
                 options.locate = locate;
                 options.storage = storage;
-                options.count = true;
-                const auto tri = core::triangulate(c.points, sequence, options);
-                const std::string variant = c.name + " order " + std::string(order_name) +
-                                            " locate " + std::string(locate_name) + " storage " +
-                                            std::string(storage_name);
-                const auto report = core::validate(c.points, tri.tets);
-                ASSERT_TRUE(report.ok())
-                    << variant << ": " << (report.problems.empty() ? "" : report.problems[0]);
-                EXPECT_EQ(report.duplicates, tri.duplicates.size()) << variant;
-                if (c.expected_tets >= 0) {
-                    EXPECT_EQ(static_cast<long long>(tri.tets.size()), c.expected_tets) << variant;
-                }
-                // Work identity of Bowyer–Watson: the final solid tetrahedra are those created
-                // minus those deleted (the bootstrap tetrahedron counts as created).
-                EXPECT_EQ(tri.counters.tets_created - tri.counters.tets_deleted, tri.tets.size())
-                    << variant;
-                const auto canon = canonical(tri.tets);
-                if (reference.empty()) {
-                    reference = canon;
-                } else {
-                    ASSERT_EQ(canon, reference) << variant << ": a different triangulation";
-                }
+                options.count = count;
+                check(c.name + " order " + std::string(order_name) + " locate " +
+                          std::string(locate_name) + " storage " + std::string(storage_name),
+                      core::triangulate(c.points, sequence, options));
             }
         }
     }
+}
+
+TEST_P(Variants, ValidAndIdenticalForEveryOrderLocatorAndStorage) {
+    const CorpusCase& c = GetParam();
+    std::vector<std::array<std::uint32_t, 4>> reference;
+    for_each_variant(c, 11, true, [&](const std::string& variant, const auto& tri) {
+        const auto report = core::validate(c.points, tri.tets);
+        ASSERT_TRUE(report.ok()) << variant << ": "
+                                 << (report.problems.empty() ? "" : report.problems[0]);
+        EXPECT_EQ(report.duplicates, tri.duplicates.size()) << variant;
+        if (c.expected_tets >= 0) {
+            EXPECT_EQ(static_cast<long long>(tri.tets.size()), c.expected_tets) << variant;
+        }
+        // Work identity of Bowyer–Watson: the final solid tetrahedra are those created minus
+        // those deleted (the bootstrap tetrahedron counts as created).
+        EXPECT_EQ(tri.counters.tets_created - tri.counters.tets_deleted, tri.tets.size())
+            << variant;
+        const auto canon = canonical(tri.tets);
+        if (reference.empty()) {
+            reference = canon;
+        } else {
+            EXPECT_EQ(canon, reference) << variant << ": a different triangulation";
+        }
+    });
 }
 
 // The uncounted engine takes the fast routes (static filters; on integer grids the plain
@@ -77,23 +85,9 @@ TEST_P(Variants, UncountedEngineMatchesTheCountingOne) {
     core::TriangulateOptions counted;
     counted.count = true;
     const auto reference = canonical(core::triangulate(c.points, reference_sequence, counted).tets);
-    for (const auto& [order_name, order, order_help] : core::kOrderKinds) {
-        for (const auto& [locate_name, locate, locate_help] : core::kLocateKinds) {
-            for (const auto& [storage_name, storage, storage_help] : core::kStorageKinds) {
-                core::OrderOptions order_options;
-                order_options.kind = order;
-                order_options.seed = 5;
-                const auto sequence =
-                    core::make_insertion_order(c.points.points, order_options).sequence;
-                core::TriangulateOptions options;
-                options.locate = locate;
-                options.storage = storage;
-                EXPECT_EQ(canonical(core::triangulate(c.points, sequence, options).tets), reference)
-                    << c.name << " order " << order_name << " locate " << locate_name << " storage "
-                    << storage_name << ": a different triangulation";
-            }
-        }
-    }
+    for_each_variant(c, 5, false, [&](const std::string& variant, const auto& tri) {
+        EXPECT_EQ(canonical(tri.tets), reference) << variant << ": a different triangulation";
+    });
 }
 
 INSTANTIATE_TEST_SUITE_P(DegenerateCorpus,
