@@ -60,7 +60,6 @@ public:
         if constexpr (Storage::kExplicitAdjacency) {
             // Ghost faces pair up around the ghost vertex exactly as new faces pair up around a
             // new vertex.
-            gluer_.reserve(geometry_.size());
             gluer_.glue(storage_, ghosts, kGhostVertex);
         }
         storage_.end_operation();
@@ -103,9 +102,6 @@ public:
             // A live triangulation's geometry grows as points are added.
             deleted_stamp_.resize(geometry_.size(), kNoStamp);
             created_stamp_.resize(geometry_.size(), kNoStamp);
-        }
-        if constexpr (Storage::kExplicitAdjacency) {
-            gluer_.reserve(geometry_.size());  // a live triangulation's geometry grows
         }
         Digger digger{*this, u};
         dig_cavity(storage_, t0, queue_, digger);

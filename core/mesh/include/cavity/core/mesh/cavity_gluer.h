@@ -1,6 +1,5 @@
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -8,6 +7,7 @@
 #include <vector>
 
 #include "cavity/core/base/error.h"
+#include "cavity/core/base/pod_stack.h"
 #include "cavity/core/mesh/facet_gluer.h"
 #include "cavity/core/mesh/tetrahedron.h"
 
@@ -18,25 +18,28 @@ namespace cavity::core {
 /// one rotated to (apex, q, p), across the directed boundary edge (p, q). The cavity's boundary is
 /// a sphere, so each directed edge belongs to exactly one face.
 ///
-/// Small cavities (at most kMatrixSide boundary vertices, all but a few) take three passes over
-/// the new tetrahedra with nothing cleared between cavities (the scheme of HXT's
-/// computeAdjacenciesFast): mark every boundary vertex unnumbered in a per-vertex byte array,
-/// number them and write each face into a matrix cell indexed by its directed edge, then read
-/// each face's partner from the cell of the reversed edge. Every cell read was written by this
-/// cavity (the reversed edge is some face's edge), so stale cells from earlier cavities are never
-/// seen. Each face records only its own side; its partner does the same in its turn. Larger
-/// cavities (quadratic-size triangulations) pair faces through FacetGluer's hash table.
+/// Small cavities (at most kMatrixSide boundary vertices, all but a few) take two passes over the
+/// new tetrahedra (after the matrix scheme of HXT's computeAdjacenciesFast): number the boundary
+/// vertices and write each face into a matrix cell indexed by its directed edge, then read each
+/// face's partner from the cell of the reversed edge. Every cell read was written by this cavity
+/// (the reversed edge is some face's edge), so stale cells from earlier cavities are never seen.
+/// Each face records only its own side; its partner does the same in its turn. Larger cavities
+/// (quadratic-size triangulations) pair faces through FacetGluer's hash table.
+///
+/// The local numbers come from a small open-addressing table keyed by vertex id, emptied after
+/// each cavity by undoing its own writes, rather than from a byte per vertex as in HXT: that byte
+/// array was 1 byte per point of the peak memory (issue 13), and per thread in the parallel
+/// construction. The first pass keeps each tetrahedron's numbers, so the second pass needs no
+/// lookup.
 class CavityGluer {
 public:
-    /// Makes room for vertex ids below `vertices` (the ghost vertex has a slot of its own).
-    void reserve(std::size_t vertices) {
-        if (local_.size() <= vertices) {
-            local_.resize(vertices + 1);
-        }
-    }
+    /// Nothing to make room for: the table has a fixed size and numbers any vertex id, the ghost
+    /// vertex included. Left only for the parallel construction's worker, which still calls it;
+    /// it goes with that call.
+    void reserve(std::size_t /*vertices*/) {}
 
     /// Glues the faces through `apex` of the tetrahedra `created`, each of which has `apex` as a
-    /// vertex and whose other vertices are below the reserved count or the ghost vertex.
+    /// vertex (any ids but kNoVertex).
     template <class Storage>
     void glue(Storage& storage, std::span<const TetId> created, VertexId apex) {
         // A sphere with F triangles has F/2 + 2 vertices; the apex takes a number too.
@@ -44,58 +47,122 @@ public:
             glue_hashed(storage, created, apex);
             return;
         }
-        // Byte stores may alias anything, so the arrays and each record's vertices are read into
-        // locals once: otherwise the compiler reloads them after every mark.
-        std::uint8_t* const local = local_.data();
-        HalfFacet* const matrix = matrix_.data();
-        const std::size_t ghost = local_.size() - 1;
-        const auto slot = [ghost](VertexId w) { return std::min<std::size_t>(w, ghost); };
+        numbers_.clear();
         for (TetId t : created) {
             const TetVertices v = storage.vertices(t);
-            for (VertexId w : v) {
-                local[slot(w)] = kUnnumbered;
+            // The apex is in slot 3 but in ghosts (cone() in tetrahedron.h): the tests go in that
+            // order, and each case is compiled with its faces' slots as constants.
+            if (v[3] == apex) [[likely]] {
+                number_faces<3>(t, v);
+            } else if (v[0] == apex) {
+                number_faces<0>(t, v);
+            } else if (v[1] == apex) {
+                number_faces<1>(t, v);
+            } else {
+                number_faces<2>(t, v);
             }
         }
-        std::uint8_t next = 0;
-        for (TetId t : created) {
-            const TetVertices v = storage.vertices(t);
-            std::array<std::uint32_t, 4> number{};
-            for (std::size_t s = 0; s < 4; ++s) {
-                std::uint8_t& l = local[slot(v[s])];
-                if (l == kUnnumbered) {
-                    // Euler's count bounds the numbers for a sphere, which the size check above
-                    // relied on; more would mean a corrupt cavity, never a memory overrun.
-                    if (std::size_t{next} == kMatrixSide) [[unlikely]] {
-                        throw_too_many_vertices();
-                    }
-                    l = next++;
-                }
-                number[s] = l;
-            }
-            for (const ApexFace& face : kApexFaces[apex_slot(v, apex)]) {
-                matrix[number[face.from] * kMatrixSide + number[face.to]] = half_facet(t, face.s);
+        for (std::size_t k = 0; k < created.size(); ++k) {
+            const std::uint32_t packed = numbers_[k];
+            switch (packed >> kApexShift) {
+                case 3:
+                    glue_faces<3>(storage, created[k], packed);
+                    break;
+                case 0:
+                    glue_faces<0>(storage, created[k], packed);
+                    break;
+                case 1:
+                    glue_faces<1>(storage, created[k], packed);
+                    break;
+                default:
+                    glue_faces<2>(storage, created[k], packed);
+                    break;
             }
         }
-        for (TetId t : created) {
-            const TetVertices v = storage.vertices(t);
-            std::array<std::uint32_t, 4> number{};
-            for (std::size_t s = 0; s < 4; ++s) {
-                number[s] = local[slot(v[s])];
-            }
-            for (const ApexFace& face : kApexFaces[apex_slot(v, apex)]) {
-                storage.set_adjacent(half_facet(t, face.s),
-                                     matrix[number[face.to] * kMatrixSide + number[face.from]]);
-            }
-        }
+        forget_numbers();
     }
 
 private:
     static constexpr std::size_t kMatrixSide = 64;
-    static constexpr std::uint8_t kUnnumbered = 0xFF;
+    // A word of numbers_: a number (below kMatrixSide) per slot, a byte each, and the apex's slot
+    // in the top two bits, which the number in slot 3 leaves free.
+    static constexpr std::uint32_t kNumberMask = kMatrixSide - 1;
+    static constexpr std::uint32_t kApexShift = 30;
+    // Twice the most numbers a cavity takes, so that a probe meets an empty slot within a few
+    // steps; a power of two, indexed by the top bits of a product.
+    static constexpr std::uint32_t kTableBits = 7;
+    static constexpr std::size_t kTableSize = std::size_t{1} << kTableBits;
+    static_assert(kTableSize >= 2 * kMatrixSide);
+
+    struct Entry {
+        VertexId vertex;  // kNoVertex: empty
+        std::uint32_t number;
+    };
 
     [[noreturn]] static void throw_too_many_vertices() {
         throw InternalError(
             "internal error: a cavity boundary has more vertices than its faces allow");
+    }
+
+    /// The number of boundary vertex w in this cavity, given on its first lookup (1, 2, ...).
+    [[gnu::always_inline]] std::uint32_t local_number(VertexId w) {
+        // Fibonacci hashing: the top bits of the product depend on every bit of the id.
+        std::size_t i = (w * 0x9E37'79B1u) >> (32 - kTableBits);
+        for (;;) {
+            Entry& e = table_[i];
+            if (e.vertex == w) {
+                return e.number;
+            }
+            if (e.vertex == kNoVertex) {
+                // Euler's count bounds the numbers for a sphere, which the size check in glue()
+                // relied on; more would mean a corrupt cavity, never a memory overrun.
+                if (next_ == kMatrixSide) [[unlikely]] {
+                    forget_numbers();
+                    throw_too_many_vertices();
+                }
+                e = {w, next_};
+                slot_of_[next_] = static_cast<std::uint32_t>(i);
+                return next_++;
+            }
+            i = (i + 1) & (kTableSize - 1);
+        }
+    }
+
+    /// Empties the table by undoing this cavity's writes, ready for the next one.
+    void forget_numbers() {
+        for (std::uint32_t k = 1; k < next_; ++k) {
+            table_[slot_of_[k]].vertex = kNoVertex;
+        }
+        next_ = 1;
+    }
+
+    /// First pass for a new tetrahedron t (vertices v) with the apex in slot A: numbers its other
+    /// vertices, keeps the numbers (a byte each, the apex's 0) and A in its word of numbers_, and
+    /// writes each face through the apex into the cell of its directed edge.
+    template <std::size_t A>
+    [[gnu::always_inline]] void number_faces(TetId t, const TetVertices& v) {
+        std::array<std::uint32_t, 4> number{};
+        std::uint32_t packed = std::uint32_t{A} << kApexShift;
+        for (std::size_t s = 0; s < 4; ++s) {
+            if (s != A) {
+                number[s] = local_number(v[s]);
+                packed |= number[s] << (8 * s);
+            }
+        }
+        numbers_.push_back(packed);
+        for (const ApexFace& face : kApexFaces[A]) {
+            matrix_[number[face.from] * kMatrixSide + number[face.to]] = half_facet(t, face.s);
+        }
+    }
+
+    /// Second pass: each face through the apex of t takes its partner from the reversed edge.
+    template <std::size_t A, class Storage>
+    [[gnu::always_inline]] void glue_faces(Storage& storage, TetId t, std::uint32_t packed) {
+        for (const ApexFace& face : kApexFaces[A]) {
+            const std::uint32_t from = (packed >> (8 * face.from)) & kNumberMask;
+            const std::uint32_t to = (packed >> (8 * face.to)) & kNumberMask;
+            storage.set_adjacent(half_facet(t, face.s), matrix_[to * kMatrixSide + from]);
+        }
     }
 
     static std::size_t apex_slot(const TetVertices& v, VertexId apex) {
@@ -149,9 +216,15 @@ private:
         hashed_.end();
     }
 
-    // One byte per vertex id, then one for the ghost vertex (above every id): local numbers.
-    std::vector<std::uint8_t> local_ = std::vector<std::uint8_t>(1);
-    std::vector<HalfFacet> matrix_ = std::vector<HalfFacet>(kMatrixSide * kMatrixSide);
+    std::array<Entry, kTableSize> table_ = [] {
+        std::array<Entry, kTableSize> empty{};
+        empty.fill({kNoVertex, 0});
+        return empty;
+    }();
+    std::array<std::uint32_t, kMatrixSide> slot_of_{};  // the table slot of each number
+    std::uint32_t next_ = 1;                            // the next number to give
+    PodStack<std::uint32_t> numbers_;  // per new tetrahedron, its four numbers, a byte each
+    std::array<HalfFacet, kMatrixSide * kMatrixSide> matrix_{};
     FacetGluer hashed_;
 };
 
