@@ -35,9 +35,8 @@ struct OrderOptions {
     /// BRIO: sort the even-numbered rounds backwards along the curve, so each round starts near
     /// where the previous one ended (Cheng, Dey, Shewchuk, "Delaunay Mesh Generation", §5.5).
     bool reverse_alternate_rounds = true;
-    /// BRIO: rounds are sorted independently, so up to this many threads sort them at once (the
-    /// last round holds about half the points, so two threads do most of the good). The order
-    /// is the same for every count.
+    /// Threads that sort along the curve (every order but input and random). The order is the same
+    /// for every count.
     unsigned threads = 1;
 };
 
