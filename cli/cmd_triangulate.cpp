@@ -41,7 +41,7 @@ struct TriangulateArgs {
     std::vector<std::uint64_t> delete_ids;
     std::uint64_t seed = 0;
     unsigned threads = 0;  ///< 0: the sequential engine
-    double brio_ratio = 0.5;
+    double brio_ratio = 0.125;
     bool no_reverse_rounds = false;
     bool weighted = false;
     bool check = false;
@@ -426,7 +426,9 @@ void add_triangulate_command(CLI::App& app) {
     cmd->add_option("--brio-ratio",
                     args->brio_ratio,
                     "BRIO: fraction of the points carried into the earlier rounds, in [0, 1) "
-                    "(Amenta-Choi-Rote's, CGAL's and geogram's convention: 1/8 there)")
+                    "(Amenta-Choi-Rote's, CGAL's and geogram's convention; the theory's ratio is "
+                    "1/2, CGAL's "
+                    "and geogram's 1/8)")
         ->capture_default_str();
     cmd->add_flag("--no-reverse-rounds",
                   args->no_reverse_rounds,

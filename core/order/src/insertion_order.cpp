@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <numeric>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "cavity/core/base/error.h"
@@ -82,42 +81,13 @@ InsertionOrder brio_order(std::span<const Point3> points, const OrderOptions& op
     for (std::size_t i = 0; i < n; ++i) {
         order.sequence[fill[round_of[i]]++] = static_cast<std::uint32_t>(i);
     }
-    const auto sort_round = [&](std::uint32_t r) {
+    // Round by round, each with every thread: the last round holds most of the points.
+    for (std::uint32_t r = 0; r <= last; ++r) {
         const std::span<std::uint32_t> round(order.sequence.data() + order.round_begin[r],
                                              round_size[r]);
-        hilbert_sort(points, round);
+        hilbert_sort(points, round, options.threads);
         if (options.reverse_alternate_rounds && r % 2 == 0) {
             std::reverse(round.begin(), round.end());
-        }
-    };
-    // Largest rounds first, each to the least loaded thread; thread 0 is this one.
-    const unsigned threads = std::max(1u, options.threads);
-    std::vector<std::uint32_t> by_size(last + 1);
-    std::iota(by_size.begin(), by_size.end(), 0u);
-    std::stable_sort(by_size.begin(), by_size.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return round_size[a] > round_size[b];
-    });
-    std::vector<std::vector<std::uint32_t>> rounds_of(threads);
-    std::vector<std::size_t> load(threads, 0);
-    for (std::uint32_t r : by_size) {
-        const auto least =
-            static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
-        rounds_of[least].push_back(r);
-        load[least] += round_size[r];
-    }
-    {
-        std::vector<std::jthread> helpers;
-        for (unsigned t = 1; t < threads; ++t) {
-            if (!rounds_of[t].empty()) {
-                helpers.emplace_back([&, t] {
-                    for (std::uint32_t r : rounds_of[t]) {
-                        sort_round(r);
-                    }
-                });
-            }
-        }
-        for (std::uint32_t r : rounds_of[0]) {
-            sort_round(r);
         }
     }
     return order;
@@ -146,11 +116,11 @@ InsertionOrder make_insertion_order(std::span<const Point3> points, const OrderO
             break;
         case OrderKind::kHilbert:
             order.sequence = identity(points.size());
-            hilbert_sort(points, order.sequence);
+            hilbert_sort(points, order.sequence, options.threads);
             break;
         case OrderKind::kZOrder:
             order.sequence = identity(points.size());
-            morton_sort(points, order.sequence);
+            morton_sort(points, order.sequence, options.threads);
             break;
     }
     return order;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cavity/core/base/error.h"
@@ -55,24 +56,6 @@ Item* split(Item* begin, Item* end, int axis, bool ascending) {
     return middle;
 }
 
-// One level of octant splitting in the frame (a0, a1, a2) = (axis, axis+1, axis+2) mod 3: a
-// median split along a0, each half along a1, each quarter along a2, with the a1 and a2 directions
-// reflected where the curve visits octants in reflected (Gray code) order. Fills the 9 octant
-// boundaries m[0..8].
-template <bool kGray>
-void split_octants(std::array<Item*, 9>& m, int axis, const std::array<bool, 3>& up) {
-    const int a0 = axis;
-    const int a1 = (axis + 1) % 3;
-    const int a2 = (axis + 2) % 3;
-    m[4] = split(m[0], m[8], a0, up[a0]);
-    m[2] = split(m[0], m[4], a1, up[a1]);
-    m[6] = split(m[4], m[8], a1, kGray ? !up[a1] : up[a1]);
-    m[1] = split(m[0], m[2], a2, up[a2]);
-    m[3] = split(m[2], m[4], a2, kGray ? !up[a2] : up[a2]);
-    m[5] = split(m[4], m[6], a2, up[a2]);
-    m[7] = split(m[6], m[8], a2, kGray ? !up[a2] : up[a2]);
-}
-
 // The Hilbert curve in a cube, in its own frame (a0, a1, a2) with every axis ascending, enters
 // at corner (0,0,0) and leaves at (1,0,0). It visits the octants in Gray code order
 //   000 001 011 010 110 111 101 100   (bits u0 u1 u2 along a0 a1 a2)
@@ -103,36 +86,53 @@ constexpr std::array<Octant, 8> kHilbertOctants = {{
     {2, {true, false, true}},
 }};
 
-void hilbert_recurse(Item* begin, Item* end, int axis, std::array<bool, 3> up) {
+// A curve of either kind is a binary tree of median splits. A level of the recursion works in the
+// frame (a0, a1, a2) = (axis, axis+1, axis+2) mod 3: a split along a0 (depth 0), each half along
+// a1 (depth 1), each quarter along a2 (depth 2); `octant` holds the bits of the halves taken so
+// far. The Hilbert curve visits the halves of a1 and a2 in reflected (Gray code) order: the a1
+// split of the upper a0 half and the a2 split of every odd quarter run backwards. At depth 3 the
+// range is one octant, sorted as a new level in the octant's frame (Morton: the same frame).
+// Below kParallelItems a thread would cost more than it saves; the splits are the same whichever
+// thread makes them, so the order does not depend on `threads`.
+template <bool kHilbert>
+void curve_node(Item* begin,
+                Item* end,
+                int axis,
+                std::array<bool, 3> up,
+                int depth,
+                int octant,
+                unsigned threads) {
     if (end - begin < 2) {
         return;
     }
-    std::array<Item*, 9> m{};
-    m[0] = begin;
-    m[8] = end;
-    split_octants<true>(m, axis, up);
-    for (int k = 0; k < 8; ++k) {
-        const Octant& octant = kHilbertOctants[k];
-        std::array<bool, 3> child_up = up;
-        for (int j = 0; j < 3; ++j) {
-            const int global = (axis + j) % 3;
-            child_up[global] = up[global] != octant.reflect[j];
+    if (depth == 3) {
+        if constexpr (kHilbert) {
+            const Octant& copy = kHilbertOctants[static_cast<std::size_t>(octant)];
+            std::array<bool, 3> child_up = up;
+            for (int j = 0; j < 3; ++j) {
+                const int global = (axis + j) % 3;
+                child_up[global] = up[global] != copy.reflect[j];
+            }
+            curve_node<true>(begin, end, (axis + copy.first_axis) % 3, child_up, 0, 0, threads);
+        } else {
+            curve_node<false>(begin, end, axis, up, 0, 0, threads);
         }
-        hilbert_recurse(m[k], m[k + 1], (axis + octant.first_axis) % 3, child_up);
-    }
-}
-
-void morton_recurse(Item* begin, Item* end) {
-    if (end - begin < 2) {
         return;
     }
-    std::array<Item*, 9> m{};
-    m[0] = begin;
-    m[8] = end;
-    split_octants<false>(m, 0, {true, true, true});
-    for (int k = 0; k < 8; ++k) {
-        morton_recurse(m[k], m[k + 1]);
+    const int along = (axis + depth) % 3;
+    const bool reflected = kHilbert && depth > 0 && (octant & 1) != 0;
+    Item* const middle = split(begin, end, along, up[along] != reflected);
+    constexpr std::ptrdiff_t kParallelItems = 1 << 15;
+    if (threads >= 2 && end - begin >= kParallelItems) {
+        std::jthread low([=] {
+            curve_node<kHilbert>(begin, middle, axis, up, depth + 1, 2 * octant, threads / 2);
+        });
+        curve_node<kHilbert>(
+            middle, end, axis, up, depth + 1, 2 * octant + 1, threads - threads / 2);
+        return;
     }
+    curve_node<kHilbert>(begin, middle, axis, up, depth + 1, 2 * octant, 1);
+    curve_node<kHilbert>(middle, end, axis, up, depth + 1, 2 * octant + 1, 1);
 }
 
 std::vector<Item> gather(std::span<const Point3> points, std::span<const std::uint32_t> indices) {
@@ -156,15 +156,21 @@ void scatter(const std::vector<Item>& items, std::span<std::uint32_t> indices) {
 
 }  // namespace
 
-void hilbert_sort(std::span<const Point3> points, std::span<std::uint32_t> indices) {
+void hilbert_sort(std::span<const Point3> points,
+                  std::span<std::uint32_t> indices,
+                  unsigned threads) {
     std::vector<Item> items = gather(points, indices);
-    hilbert_recurse(items.data(), items.data() + items.size(), 0, {true, true, true});
+    curve_node<true>(
+        items.data(), items.data() + items.size(), 0, {true, true, true}, 0, 0, threads);
     scatter(items, indices);
 }
 
-void morton_sort(std::span<const Point3> points, std::span<std::uint32_t> indices) {
+void morton_sort(std::span<const Point3> points,
+                 std::span<std::uint32_t> indices,
+                 unsigned threads) {
     std::vector<Item> items = gather(points, indices);
-    morton_recurse(items.data(), items.data() + items.size());
+    curve_node<false>(
+        items.data(), items.data() + items.size(), 0, {true, true, true}, 0, 0, threads);
     scatter(items, indices);
 }
 

@@ -109,15 +109,22 @@ TEST(InsertionOrder, SeedsDecide) {
               make_insertion_order(cube.points, {OrderKind::kHilbert, 2}).sequence);
 }
 
-TEST(InsertionOrder, BrioIsTheSameForEveryThreadCount) {
-    const PointSet ps = generate_points("cube", 50000, 9);
-    OrderOptions options;
-    const InsertionOrder one = make_insertion_order(ps.points, options);
-    for (unsigned threads : {2u, 3u, 8u}) {
-        options.threads = threads;
-        const InsertionOrder many = make_insertion_order(ps.points, options);
-        EXPECT_EQ(many.sequence, one.sequence) << threads;
-        EXPECT_EQ(many.round_begin, one.round_begin) << threads;
+TEST(InsertionOrder, CurveOrdersAreTheSameForEveryThreadCount) {
+    // Large enough that the sort splits across threads at the first levels (and in BRIO's last
+    // rounds), with a flat slab so that ties on one axis are split by index on every thread.
+    PointSet ps = generate_points("cube", 120000, 9);
+    for (std::size_t i = 0; i < ps.points.size(); i += 3) {
+        ps.points[i].z = 0.5;
+    }
+    for (const OrderKind kind : {OrderKind::kBrio, OrderKind::kHilbert, OrderKind::kZOrder}) {
+        OrderOptions options{kind, 4};
+        const InsertionOrder one = make_insertion_order(ps.points, options);
+        for (unsigned threads : {2u, 3u, 8u}) {
+            options.threads = threads;
+            const InsertionOrder many = make_insertion_order(ps.points, options);
+            EXPECT_EQ(many.sequence, one.sequence) << threads;
+            EXPECT_EQ(many.round_begin, one.round_begin) << threads;
+        }
     }
 }
 
