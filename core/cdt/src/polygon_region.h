@@ -78,7 +78,19 @@ private:
     const PlcFacet& facet_;
     ExactPlane plane_;
     FacetRegion region_;
-    std::map<VertexId, std::pair<int, Rational>> side_;
+
+    /// What side(v) computed about a vertex, kept: the region tests ask again for the exact
+    /// points of the same few vertices, and converting an implicit point costs dozens of GMP
+    /// operations.
+    struct Placed {
+        int side;
+        Rational offset;
+        ExactPoint point;
+    };
+
+    const Placed& placed(VertexId v);
+
+    std::map<VertexId, Placed> side_;
     std::vector<std::array<VertexId, 2>> sides_;
     std::set<std::array<VertexId, 2>> side_set_;
     std::set<VertexId> corners_;
