@@ -12,15 +12,24 @@ namespace cavity::core {
 
 namespace {
 
-/// The point (u, v) with its doubles: the conversion, however it rounds, is within one unit in
-/// the last place.
-Point2 point2(Rational u, Rational v) {
-    const double du = u.convert_to<double>();
-    const double dv = v.convert_to<double>();
-    return {std::move(u), std::move(v), du, dv};
+/// x rounded toward zero (mpq_get_d: within one unit in the last place; Boost's convert_to
+/// rounds to nearest through a generic path that cost as much as the rest of the region test).
+double truncated(const Rational& x) {
+    return mpq_get_d(x.backend().data());
 }
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/// The point (u, v) with its doubles.
+Point2 point2(Rational u, Rational v) {
+    const double du = truncated(u);
+    const double dv = truncated(v);
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    return {std::move(u),
+            std::move(v),
+            du,
+            dv,
+            std::nextafter(dv, -kInfinity),
+            std::nextafter(dv, kInfinity)};
+}
 
 Point2 project(const ExactPoint& p, int drop) {
     const std::size_t u = drop == 0 ? 1 : 0;
@@ -28,21 +37,20 @@ Point2 project(const ExactPoint& p, int drop) {
     return point2(p[u], p[v]);
 }
 
-/// p.v > x.v, by the doubles when they are more than two units in the last place apart.
+/// p.v > x.v, by the intervals when they are apart.
 bool above(const Point2& p, const Point2& x) {
-    if (std::nextafter(p.dv, -kInfinity) > std::nextafter(x.dv, kInfinity)) {
+    if (p.v_lo > x.v_hi) {
         return true;
     }
-    if (std::nextafter(p.dv, kInfinity) < std::nextafter(x.dv, -kInfinity)) {
+    if (p.v_hi < x.v_lo) {
         return false;
     }
     return p.v > x.v;
 }
 
-/// p.v == x.v, by the doubles when they are apart.
+/// p.v == x.v, by the intervals when they are apart.
 bool level(const Point2& p, const Point2& x) {
-    return std::nextafter(p.dv, -kInfinity) <= std::nextafter(x.dv, kInfinity) &&
-           std::nextafter(x.dv, -kInfinity) <= std::nextafter(p.dv, kInfinity) && p.v == x.v;
+    return p.v_lo <= x.v_hi && x.v_lo <= p.v_hi && p.v == x.v;
 }
 
 std::vector<Point2> project_loop(const Plc& plc, const std::vector<std::uint32_t>& loop, int drop) {

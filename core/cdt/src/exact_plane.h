@@ -105,14 +105,16 @@ private:
 };
 
 /// A point of a facet's plane, projected one-to-one by dropping one coordinate, with its
-/// coordinates rounded to doubles (each within one unit in the last place): the point-in-loop
-/// test compares v against every side's ends and takes orientations, and the doubles decide
-/// nearly all of those without GMP.
+/// coordinates rounded to doubles (each within one unit in the last place) and doubles
+/// v_lo <= v <= v_hi: the point-in-loop test compares v against every side's ends and takes
+/// orientations, and the doubles decide nearly all of those without GMP.
 struct Point2 {
     Rational u;
     Rational v;
     double du;
     double dv;
+    double v_lo;
+    double v_hi;
 };
 
 /// A facet's region made ready for many point queries: its loops projected to rationals and the
