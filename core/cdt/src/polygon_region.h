@@ -43,6 +43,9 @@ public:
     /// n . (v - a) for a right vertex (the speed at which its height rises), 0 otherwise.
     Rational speed(VertexId v);
 
+    /// The vertex's point in rationals, converted once per facet.
+    const ExactPoint& point(VertexId v) { return placed(v).point; }
+
     bool has_left_and_right(std::span<const VertexId> vs);
 
     /// How a tetrahedron meets the polygon.
