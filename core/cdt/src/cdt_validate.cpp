@@ -189,15 +189,37 @@ private:
     std::vector<std::uint32_t> corners_;
 };
 
+/// The PLC's points in rationals, each converted on first use and kept: a point is a corner of
+/// several triangles of several facets, and converting an implicit point costs some ten thousand
+/// instructions of GMP.
+class RationalPoints {
+public:
+    explicit RationalPoints(const PointSet& points) : points_(points), made_(points.size()) {}
+
+    const ExactPoint& operator[](std::uint32_t i) {
+        std::optional<ExactPoint>& p = made_[i];
+        if (!p) {
+            p.emplace(exact_point(points_, i));
+        }
+        return *p;
+    }
+
+private:
+    const PointSet& points_;
+    std::vector<std::optional<ExactPoint>> made_;
+};
+
 /// True when mesh triangle g lies in the facet's plane with its centroid in the facet's region.
-bool in_facet(const Plc& plc, const FacetRegion& region, const FacetSide& side, const Triangle& g) {
-    const ExactPoints pts{plc.points};
+bool in_facet(const FacetRegion& region,
+              const FacetSide& side,
+              RationalPoints& rational,
+              const Triangle& g) {
     if (side(g[0]) != Sign::kZero || side(g[1]) != Sign::kZero || side(g[2]) != Sign::kZero) {
         return false;
     }
-    const ExactPoint a = exact_point(pts[g[0]]);
-    const ExactPoint b = exact_point(pts[g[1]]);
-    const ExactPoint c = exact_point(pts[g[2]]);
+    const ExactPoint& a = rational[g[0]];
+    const ExactPoint& b = rational[g[1]];
+    const ExactPoint& c = rational[g[2]];
     const ExactPoint centroid{
         (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
     return region.contains(centroid);
@@ -236,7 +258,8 @@ std::optional<std::vector<Triangle>> covering_faces(const Plc& plc,
                                                     const FacetRegion& region,
                                                     const FacetSide& side,
                                                     const BoxedMesh& mesh,
-                                                    VertexTriangles& around) {
+                                                    VertexTriangles& around,
+                                                    RationalPoints& rational) {
     around.next_search();
     std::vector<std::uint32_t> frontier;
     for (const auto& loop : facet.loops) {
@@ -253,14 +276,11 @@ std::optional<std::vector<Triangle>> covering_faces(const Plc& plc,
         frontier.pop_back();
         for (std::uint32_t k : around.of(v)) {
             const Triangle& g = mesh.triangles[k];
-            if (!around.first_visit_of_triangle(k) || !in_facet(plc, region, side, g)) {
+            if (!around.first_visit_of_triangle(k) || !in_facet(region, side, rational, g)) {
                 continue;
             }
             faces.push_back(g);
-            covered += triangle_area2(plane,
-                                      exact_point(plc.points, g[0]),
-                                      exact_point(plc.points, g[1]),
-                                      exact_point(plc.points, g[2]));
+            covered += triangle_area2(plane, rational[g[0]], rational[g[1]], rational[g[2]]);
             for (std::uint32_t w : g) {
                 if (around.first_visit_of_vertex(w)) {
                     frontier.push_back(w);
@@ -284,6 +304,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
                                     const BoxedMesh& mesh,
                                     VertexTriangles& around,
                                     ScanIndex& index_of_mesh,
+                                    RationalPoints& rational,
                                     bool carved,
                                     Report& report) {
     const PlcFacet& facet = plc.facets[index];
@@ -302,7 +323,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
     const FacetSide side(plc, facet, *plane);
     const FacetRegion region(plc, facet, *plane);
     if (!carved) {
-        if (auto found = covering_faces(plc, facet, *plane, region, side, mesh, around)) {
+        if (auto found = covering_faces(plc, facet, *plane, region, side, mesh, around, rational)) {
             return std::move(*found);
         }
     }
@@ -335,12 +356,9 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         if (!box.meets(mesh.triangle_boxes[k])) {
             continue;
         }
-        if (in_facet(plc, region, side, g)) {
+        if (in_facet(region, side, rational, g)) {
             faces.push_back(g);
-            covered += triangle_area2(*plane,
-                                      exact_point(plc.points, g[0]),
-                                      exact_point(plc.points, g[1]),
-                                      exact_point(plc.points, g[2]));
+            covered += triangle_area2(*plane, rational[g[0]], rational[g[1]], rational[g[2]]);
         }
     }
     if (!carved && covered != facet_region_area2(plc, facet, *plane)) {
@@ -558,10 +576,11 @@ CdtValidation validate_cdt(const Plc& plc,
     }
     VertexTriangles around(mesh.triangles, plc.points.size());
     ScanIndex index_of_mesh;
+    RationalPoints rational(plc.points);
     std::set<Triangle> constrained;
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
         for (const Triangle& g :
-             polygon_faces(plc, f, mesh, around, index_of_mesh, carved, report)) {
+             polygon_faces(plc, f, mesh, around, index_of_mesh, rational, carved, report)) {
             constrained.insert(g);
         }
     }

@@ -14,7 +14,6 @@
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/plc_validity.h"
 #include "cavity/core/live/delaunay_triangulation.h"
-#include "cavity/core/mesh/star.h"
 #include "exact_plane.h"
 #include "split_point.h"
 
@@ -160,9 +159,38 @@ public:
         }
     }
 
-    /// The live tetrahedra around point i (its star).
-    std::vector<TetId> star(std::uint32_t i) const {
-        return vertex_star(dt_.storage(), vertex_[i]);
+    /// The live tetrahedra around point i (its star), in vertex_star's order (the breadth-first
+    /// order from the vertex's tetrahedron), with a stamp per tetrahedron marking those found:
+    /// vertex_star looks each one up in the list, quadratic in the star, and the stars of the
+    /// vertices on long split segments hold hundreds of tetrahedra.
+    std::vector<TetId> star(std::uint32_t i) {
+        const ArrayStorage& storage = dt_.storage();
+        const VertexId v = vertex_[i];
+        std::vector<TetId> star;
+        const TetId start = storage.tet_at_vertex(v);
+        if (start == kNoTet) {
+            return star;
+        }
+        if (found_.size() < storage.capacity()) {
+            found_.resize(storage.capacity(), 0);
+        }
+        ++search_;
+        star.push_back(start);
+        found_[start] = search_;
+        for (std::size_t k = 0; k < star.size(); ++k) {
+            const TetId t = star[k];
+            const TetVertices& w = storage.vertices(t);
+            for (int f = 0; f < 4; ++f) {
+                if (w[static_cast<std::size_t>(f)] == v) {
+                    continue;  // the facet opposite v leaves the star
+                }
+                const HalfFacet h = storage.adjacent(t, f);
+                if (h != kNoHalfFacet && std::exchange(found_[tet_of(h)], search_) != search_) {
+                    star.push_back(tet_of(h));
+                }
+            }
+        }
+        return star;
     }
 
     /// True when point j is a vertex of one of the tetrahedra `star`.
@@ -228,7 +256,9 @@ public:
 
 private:
     DelaunayTriangulation dt_;
-    std::vector<VertexId> vertex_;  ///< by point index
+    std::vector<VertexId> vertex_;      ///< by point index
+    std::vector<std::uint64_t> found_;  ///< by tetrahedron: the last star search that found it
+    std::uint64_t search_ = 0;
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 #include "cavity/predicates/generic_predicates.h"
 #include "cavity/predicates/orient3d.h"
@@ -11,10 +12,45 @@ namespace cavity::core {
 
 namespace {
 
+/// x rounded toward zero (mpq_get_d: within one unit in the last place; Boost's convert_to
+/// rounds to nearest through a generic path that cost as much as the rest of the region test).
+double truncated(const Rational& x) {
+    return mpq_get_d(x.backend().data());
+}
+
+/// The point (u, v) with its doubles.
+Point2 point2(Rational u, Rational v) {
+    const double du = truncated(u);
+    const double dv = truncated(v);
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    return {std::move(u),
+            std::move(v),
+            du,
+            dv,
+            std::nextafter(dv, -kInfinity),
+            std::nextafter(dv, kInfinity)};
+}
+
 Point2 project(const ExactPoint& p, int drop) {
     const std::size_t u = drop == 0 ? 1 : 0;
     const std::size_t v = drop == 2 ? 1 : 2;
-    return {p[u], p[v]};
+    return point2(p[u], p[v]);
+}
+
+/// p.v > x.v, by the intervals when they are apart.
+bool above(const Point2& p, const Point2& x) {
+    if (p.v_lo > x.v_hi) {
+        return true;
+    }
+    if (p.v_hi < x.v_lo) {
+        return false;
+    }
+    return p.v > x.v;
+}
+
+/// p.v == x.v, by the intervals when they are apart.
+bool level(const Point2& p, const Point2& x) {
+    return p.v_lo <= x.v_hi && x.v_lo <= p.v_hi && p.v == x.v;
 }
 
 std::vector<Point2> project_loop(const Plc& plc, const std::vector<std::uint32_t>& loop, int drop) {
@@ -26,14 +62,36 @@ std::vector<Point2> project_loop(const Plc& plc, const std::vector<std::uint32_t
     return out;
 }
 
-/// Twice the signed area of pqr: positive when r is left of pq.
-Rational orient2(const Point2& p, const Point2& q, const Point2& r) {
-    return (q.u - p.u) * (r.v - p.v) - (q.v - p.v) * (r.u - p.u);
+/// The sign of twice the signed area of pqr: positive when r is left of pq. First in doubles:
+/// with every rounded coordinate within 2^-52 of the exact one, relative, and M the largest
+/// magnitude, the double evaluation errs by less than 64 * 2^-52 * M^2 (about 48 units of error
+/// in any rounding mode: 4 * 2^-52 * M on each difference, 20 on each product, and the final
+/// subtraction), so a result beyond 2^-45 * M^2 has the exact sign. Outside the range where the
+/// relative bound holds (M tiny or huge), and near zero, the rationals decide.
+int orient2_sign(const Point2& p, const Point2& q, const Point2& r) {
+    const double m = std::max({std::abs(p.du),
+                               std::abs(p.dv),
+                               std::abs(q.du),
+                               std::abs(q.dv),
+                               std::abs(r.du),
+                               std::abs(r.dv)});
+    if (m > 0x1p-400 && m < 0x1p+400) {
+        const double det = (q.du - p.du) * (r.dv - p.dv) - (q.dv - p.dv) * (r.du - p.du);
+        const double bound = 0x1p-45 * m * m;
+        if (det > bound) {
+            return 1;
+        }
+        if (det < -bound) {
+            return -1;
+        }
+    }
+    const Rational exact = (q.u - p.u) * (r.v - p.v) - (q.v - p.v) * (r.u - p.u);
+    return exact.sign();
 }
 
 /// True when x lies on the closed segment pq.
 bool on_segment(const Point2& p, const Point2& q, const Point2& x) {
-    return orient2(p, q, x) == 0 && (x.u - p.u) * (x.u - q.u) <= 0 &&
+    return orient2_sign(p, q, x) == 0 && (x.u - p.u) * (x.u - q.u) <= 0 &&
            (x.v - p.v) * (x.v - q.v) <= 0;
 }
 
@@ -44,19 +102,19 @@ LoopPosition position(const std::vector<Point2>& loop, const Point2& x) {
     for (std::size_t i = 0; i < loop.size(); ++i) {
         const Point2& p = loop[i];
         const Point2& q = loop[(i + 1) % loop.size()];
-        const bool p_above = p.v > x.v;
-        const bool q_above = q.v > x.v;
+        const bool p_above = above(p, x);
+        const bool q_above = above(q, x);
         if (p_above != q_above) {
-            const Rational o = orient2(p, q, x);
+            const int o = orient2_sign(p, q, x);
             if (o == 0 && (x.u - p.u) * (x.u - q.u) <= 0) {
                 return LoopPosition::kOnBoundary;
             }
             // Crossing number along the ray from x in direction +u; the half-open rule on v
-            // counts a corner on the ray once.
-            if ((q.v > p.v) == (o > 0)) {
+            // counts a corner on the ray once (q_above is q.v > x.v >= p.v here, or the reverse).
+            if (q_above == (o > 0)) {
                 inside = !inside;
             }
-        } else if (!p_above && (p.v == x.v || q.v == x.v) && on_segment(p, q, x)) {
+        } else if (!p_above && (level(p, x) || level(q, x)) && on_segment(p, q, x)) {
             return LoopPosition::kOnBoundary;
         }
     }
@@ -96,7 +154,7 @@ SidePieces pieces(const std::vector<Point2>& a, const std::vector<Point2>& b) {
         cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
         for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
             const Rational t = (cuts[k] + cuts[k + 1]) / 2;
-            const Point2 mid{p.u + t * (q.u - p.u), p.v + t * (q.v - p.v)};
+            const Point2 mid = point2(p.u + t * (q.u - p.u), p.v + t * (q.v - p.v));
             switch (position(b, mid)) {
                 case LoopPosition::kInside:
                     ++out.inside;
@@ -180,6 +238,13 @@ ExactPoint exact_point(const predicates::GenericPoint3& g) {
 
 namespace {
 
+/// -s: orient3d(a, b, c, p) is positive on the side opposite (b - a) x (c - a).
+predicates::Sign opposite(predicates::Sign s) {
+    return s == predicates::Sign::kPos   ? predicates::Sign::kNeg
+           : s == predicates::Sign::kNeg ? predicates::Sign::kPos
+                                         : predicates::Sign::kZero;
+}
+
 /// The sign of component k of (b - a) x (c - a), exactly: the orientation of a, b, c projected
 /// onto the coordinate plane normal to axis k, as orient3d of the projections (in the plane
 /// z = 0) and a point above them, which is exact for every finite double.
@@ -191,10 +256,7 @@ predicates::Sign normal_sign(const Point3& a, const Point3& b, const Point3& c, 
                       0.0};
     };
     // det[a-d; b-d; c-d] with d = (0, 0, 1) is minus the 2D orientation of the projections.
-    const predicates::Sign s = predicates::orient3d(flat(a), flat(b), flat(c), {0.0, 0.0, 1.0});
-    return s == predicates::Sign::kPos   ? predicates::Sign::kNeg
-           : s == predicates::Sign::kNeg ? predicates::Sign::kPos
-                                         : predicates::Sign::kZero;
+    return opposite(predicates::orient3d(flat(a), flat(b), flat(c), {0.0, 0.0, 1.0}));
 }
 
 /// For three input points: the axis to drop (see dropped_axis), or nullopt when they are
@@ -222,7 +284,53 @@ std::optional<int> drop_axis(const Point3& a, const Point3& b, const Point3& c) 
     return std::nullopt;
 }
 
+/// A point off the plane through `corner` whose normal has a non-zero component along `axis`:
+/// `corner` moved along that axis; nullopt when the move overflows.
+std::optional<Point3> off_plane(const Point3& corner, int axis) {
+    std::array<double, 3> x{corner.x, corner.y, corner.z};
+    auto& c = x[static_cast<std::size_t>(axis)];
+    c += 2 * (std::abs(c) + 1);
+    if (!std::isfinite(c)) {
+        return std::nullopt;
+    }
+    return Point3{x[0], x[1], x[2]};
+}
+
 }  // namespace
+
+void ExactPlane::use_explicit_corners(const Plc& plc, const std::vector<std::uint32_t>& corners) {
+    std::vector<Point3> inputs;
+    for (std::uint32_t c : corners) {
+        if (const auto* p = std::get_if<Point3>(&plc.points.exact[c])) {
+            inputs.push_back(*p);
+        }
+    }
+    for (std::size_t i = 1; i < inputs.size(); ++i) {
+        const Point3& a = inputs[0];
+        const Point3& b = inputs[i];
+        if (b.x == a.x && b.y == a.y && b.z == a.z) {
+            continue;
+        }
+        for (std::size_t j = i + 1; j < inputs.size(); ++j) {
+            if (!drop_axis(a, b, inputs[j])) {
+                continue;
+            }
+            const auto x = off_plane(a, drop_);
+            if (!x) {
+                return;
+            }
+            const predicates::Sign mine = predicates::orient3d(a, b, inputs[j], *x);
+            const predicates::Sign theirs =
+                predicates::orient3d(corners_[0], corners_[1], corners_[2], *x);
+            if (mine == predicates::Sign::kZero || theirs == predicates::Sign::kZero) {
+                return;  // not off the plane after all: keep asking corners_
+            }
+            explicit_ = {a, b, inputs[j]};
+            explicit_sign_ = mine == theirs ? 1 : -1;
+            return;
+        }
+    }
+}
 
 std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& facet) {
     std::vector<std::uint32_t> corners;
@@ -238,6 +346,13 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
                           generic_point(plc.points, corners[i]),
                           generic_point(plc.points, corners[j])};
         plane.drop_ = drop;
+        if (plc.points.exact.empty()) {
+            const auto& pts = plc.points.points;
+            plane.explicit_ = {pts[corners[0]], pts[corners[i]], pts[corners[j]]};
+            plane.explicit_sign_ = 1;
+        } else {
+            plane.use_explicit_corners(plc, corners);
+        }
         return plane;
     };
     if (plc.points.exact.empty()) {
@@ -296,12 +411,35 @@ Rational ExactPlane::offset(const ExactPoint& p) const {
     return dot(n, minus(p, a));
 }
 
+predicates::Sign ExactPlane::explicit_side(const Point3& p) const {
+    const predicates::Sign s =
+        opposite(predicates::orient3d(explicit_[0], explicit_[1], explicit_[2], p));
+    return explicit_sign_ > 0 ? s : opposite(s);
+}
+
 predicates::Sign ExactPlane::side(const predicates::GenericPoint3& p) const {
-    // orient3d(a, b, c, p) is positive when p is on the side opposite (b - a) x (c - a).
-    const predicates::Sign s = predicates::orient3d(corners_[0], corners_[1], corners_[2], p);
-    return s == predicates::Sign::kPos   ? predicates::Sign::kNeg
-           : s == predicates::Sign::kNeg ? predicates::Sign::kPos
-                                         : predicates::Sign::kZero;
+    if (explicit_sign_ != 0) {
+        if (const auto* x = std::get_if<Point3>(&p)) {
+            return explicit_side(*x);
+        }
+        if (const auto* s = std::get_if<predicates::SegmentParameterPoint>(&p)) {
+            // orient3d is affine in its last point, so strictly inside segment ab (0 < t < 1)
+            // its sign is that of the ends when they agree or one of them is zero.
+            const double n = s->numerator;
+            const double d = s->denominator;
+            if ((d > 0 && n > 0 && n < d) || (d < 0 && n < 0 && n > d)) {
+                const predicates::Sign sa = explicit_side(s->a);
+                const predicates::Sign sb = explicit_side(s->b);
+                if (sa == sb || sb == predicates::Sign::kZero) {
+                    return sa;
+                }
+                if (sa == predicates::Sign::kZero) {
+                    return sb;
+                }
+            }
+        }
+    }
+    return opposite(predicates::orient3d(corners_[0], corners_[1], corners_[2], p));
 }
 
 ExactPoint ExactPlane::crossing(const ExactPoint& ep, const ExactPoint& eq) const {

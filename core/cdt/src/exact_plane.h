@@ -70,7 +70,10 @@ public:
     /// n . (p - a): positive on the side n points to. Proportional to the signed distance, without
     /// radicals (the chapter's advice for d(v, h) in §5.8).
     Rational offset(const ExactPoint& p) const;
-    /// The sign of offset(p), by the exact orient3d predicate (no rational arithmetic).
+    /// The sign of offset(p), by the exact orient3d predicate (no rational arithmetic). Asked of
+    /// three input corners when the facet has them (see explicit_), and for a point inside a
+    /// segment between input points, decided by the sides of its ends when they agree: most
+    /// answers are zero, and a zero orient3d with an implicit point is always decided in GMP.
     predicates::Sign side(const predicates::GenericPoint3& p) const;
     /// The point where segment pq meets the plane (p and q strictly on opposite sides).
     ExactPoint crossing(const ExactPoint& p, const ExactPoint& q) const;
@@ -85,15 +88,33 @@ private:
     /// conversions cost more than the rest of the PLC check.
     const std::pair<ExactPoint, ExactPoint>& rational() const;
 
+    /// Finds explicit_ among the facet's corners (those that are input points).
+    void use_explicit_corners(const Plc& plc, const std::vector<std::uint32_t>& corners);
+
+    /// The sign of offset(p) for an input point p.
+    predicates::Sign explicit_side(const Point3& p) const;
+
     std::array<predicates::GenericPoint3, 3> corners_;  ///< the corners that define the plane
+    /// Three non-collinear input corners of the facet, and the sign relating their orientation to
+    /// that of corners_ (0: the facet has no such three; side() then asks corners_). The plane is
+    /// the same, so orient3d with them differs from orient3d with corners_ by a constant factor.
+    std::array<Point3, 3> explicit_{};
+    int explicit_sign_ = 0;
     mutable std::optional<std::pair<ExactPoint, ExactPoint>> rational_;  ///< a and n, or not yet
     int drop_ = 2;
 };
 
-/// A point of a facet's plane, projected one-to-one by dropping one coordinate.
+/// A point of a facet's plane, projected one-to-one by dropping one coordinate, with its
+/// coordinates rounded to doubles (each within one unit in the last place) and doubles
+/// v_lo <= v <= v_hi: the point-in-loop test compares v against every side's ends and takes
+/// orientations, and the doubles decide nearly all of those without GMP.
 struct Point2 {
     Rational u;
     Rational v;
+    double du;
+    double dv;
+    double v_lo;
+    double v_hi;
 };
 
 /// A facet's region made ready for many point queries: its loops projected to rationals and the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 
 #include "box_grid.h"
@@ -102,11 +103,12 @@ std::string edge_name(const Plc& plc, const Edge& e) {
     return "edge " + std::to_string(e[0] + base) + "-" + std::to_string(e[1] + base);
 }
 
-/// True when every corner of facet g lies in `plane`.
-bool coplanar(const Plc& plc, const PlcFacet& g, const ExactPlane& plane) {
+/// True when every corner of facet g lies in the plane `side` measures.
+template <class Side>
+bool coplanar(const PlcFacet& g, const Side& side) {
     for (const auto& loop : g.loops) {
         for (std::uint32_t c : loop) {
-            if (plane.side(generic_point(plc.points, c)) != predicates::Sign::kZero) {
+            if (side(c) != 0) {
                 return false;
             }
         }
@@ -283,6 +285,9 @@ std::vector<std::string> plc_violations(
                        : static_cast<int>(plane->side(generic_point(plc.points, v)));
         };
         const FacetRegion region(plc, facet, *plane);
+        // Whether a facet is coplanar with this one, by facet, asked once: a facet split by edge
+        // protection has each piece of a side in this plane ask again.
+        std::map<std::size_t, bool> coplanar_owner;
         std::vector<std::size_t> near = grid.near(box, f);
         std::sort(near.begin(), near.end());
         for (std::size_t i : near) {
@@ -301,11 +306,18 @@ std::vector<std::string> plc_violations(
                 // An edge lying in the region is legal (a slit, or the foot of a wall: the edge is
                 // a cell, and the CDT has it as an edge among the polygon's triangles), unless it
                 // is a side of a coplanar facet, whose region then overlaps this one.
+                // An edge in the region is inside the facet's box: a cheap, exact filter, first.
+                if (!box.contains(edge_boxes[i])) {
+                    continue;
+                }
                 const auto g = std::find_if(e.owners.begin(), e.owners.end(), [&](std::size_t o) {
-                    return coplanar(plc, plc.facets[o], *plane);
+                    const auto [known, fresh] = coplanar_owner.emplace(o, false);
+                    if (fresh) {
+                        known->second = coplanar(plc.facets[o], side);
+                    }
+                    return known->second;
                 });
-                // An edge in the region is inside the facet's box: a cheap, exact filter.
-                if (g == e.owners.end() || !box.contains(edge_boxes[i])) {
+                if (g == e.owners.end()) {
                     continue;
                 }
                 const ExactPoint a = exact_point(p);

@@ -157,10 +157,12 @@ private:
             storage_.vertices(tet_of(across))[static_cast<std::size_t>(facet_of(across))];
         // S = det[p_i - q, H_i - H_q] (> 0: the lifted q is below aff sigma+), linear in each
         // height: S = sum_i (H_i - H_q) C_i with C_i the cofactors of the height column.
-        const ExactPoint eq = exact_point(geometry_.generic(q));
+        // The facet keeps each vertex's rational point: certify asks about the same few
+        // vertices again and again.
+        const ExactPoint& eq = facet_.point(q);
         std::array<ExactPoint, 4> rows;
         for (std::size_t i = 0; i < 4; ++i) {
-            const ExactPoint p = exact_point(geometry_.generic(sigma[i]));
+            const ExactPoint& p = facet_.point(sigma[i]);
             rows[i] = {p[0] - eq[0], p[1] - eq[1], p[2] - eq[2]};
         }
         std::array<Rational, 4> cofactor;
@@ -175,7 +177,7 @@ private:
             cofactor[i] = ((i + 3) % 2 == 0) ? m : Rational(-m);
         }
         const auto lift = [&](VertexId v) {
-            const ExactPoint e = exact_point(geometry_.generic(v));
+            const ExactPoint& e = facet_.point(v);
             return Rational(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
         };
         Rational s0 = 0;

@@ -112,17 +112,24 @@ FacetGeometry::FacetGeometry(const Geometry& geometry, const Plc& plc, const Plc
     }
 }
 
-int FacetGeometry::side(VertexId v) {
+const FacetGeometry::Placed& FacetGeometry::placed(VertexId v) {
     auto it = side_.find(v);
     if (it == side_.end()) {
-        const Rational d = plane_.offset(exact_point(geometry_.generic(v)));
-        it = side_.emplace(v, std::make_pair(d > 0 ? 1 : d < 0 ? -1 : 0, d)).first;
+        ExactPoint p = exact_point(geometry_.generic(v));
+        Rational d = plane_.offset(p);
+        const int s = d > 0 ? 1 : d < 0 ? -1 : 0;
+        it = side_.emplace(v, Placed{s, std::move(d), std::move(p)}).first;
     }
-    return it->second.first;
+    return it->second;
+}
+
+int FacetGeometry::side(VertexId v) {
+    return placed(v).side;
 }
 
 Rational FacetGeometry::speed(VertexId v) {
-    return side(v) > 0 ? side_.at(v).second : Rational(0);
+    const Placed& p = placed(v);
+    return p.side > 0 ? p.offset : Rational(0);
 }
 
 bool FacetGeometry::has_left_and_right(std::span<const VertexId> vs) {
@@ -145,8 +152,15 @@ FacetGeometry::Contact FacetGeometry::contact(const TetVertices& t) {
     for (VertexId a : t) {
         for (VertexId b : t) {
             if (side(a) < 0 && side(b) > 0) {
-                const ExactPoint x = plane_.crossing(exact_point(geometry_.generic(a)),
-                                                     exact_point(geometry_.generic(b)));
+                // The offsets are kept, so the crossing a + along (b - a) needs no plane
+                // evaluation.
+                const Placed& pa = placed(a);
+                const Placed& pb = placed(b);
+                const Rational along = pa.offset / (pa.offset - pb.offset);
+                ExactPoint x;
+                for (std::size_t k = 0; k < 3; ++k) {
+                    x[k] = pa.point[k] + along * (pb.point[k] - pa.point[k]);
+                }
                 return region_.contains(x) ? Contact::kCrosses : Contact::kNone;
             }
         }
@@ -175,7 +189,7 @@ bool FacetGeometry::face_in_region(std::span<const VertexId> on) {
     }
     ExactPoint centroid{0, 0, 0};
     for (VertexId v : on) {
-        const ExactPoint p = exact_point(geometry_.generic(v));
+        const ExactPoint& p = placed(v).point;
         for (std::size_t k = 0; k < 3; ++k) {
             centroid[k] += p[k];
         }

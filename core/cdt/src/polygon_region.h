@@ -43,6 +43,9 @@ public:
     /// n . (v - a) for a right vertex (the speed at which its height rises), 0 otherwise.
     Rational speed(VertexId v);
 
+    /// The vertex's point in rationals, converted once per facet.
+    const ExactPoint& point(VertexId v) { return placed(v).point; }
+
     bool has_left_and_right(std::span<const VertexId> vs);
 
     /// How a tetrahedron meets the polygon.
@@ -78,7 +81,19 @@ private:
     const PlcFacet& facet_;
     ExactPlane plane_;
     FacetRegion region_;
-    std::map<VertexId, std::pair<int, Rational>> side_;
+
+    /// What side(v) computed about a vertex, kept: the region tests ask again for the exact
+    /// points of the same few vertices, and converting an implicit point costs dozens of GMP
+    /// operations.
+    struct Placed {
+        int side;
+        Rational offset;
+        ExactPoint point;
+    };
+
+    const Placed& placed(VertexId v);
+
+    std::map<VertexId, Placed> side_;
     std::vector<std::array<VertexId, 2>> sides_;
     std::set<std::array<VertexId, 2>> side_set_;
     std::set<VertexId> corners_;
