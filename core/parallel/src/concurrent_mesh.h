@@ -22,8 +22,9 @@ namespace cavity::core {
 /// the slot (try_lock acquired it, unlock releases it), so the lock's acquire and release order
 /// every record access; the owner bytes, which neighbouring slots of different owners share, are
 /// only touched atomically. A dead slot's byte is kDead, which try_lock never takes: the thread
-/// that freed the slot (or claimed its block) is the only one that can hand it out again, with a
-/// plain store and no read-modify-write. A thread owns every tetrahedron it looks
+/// that freed the slot (or claimed its block) is the only one that can hand it out again: it
+/// writes the new record while the byte still says dead, then publishes it with unlock's release
+/// store, no read-modify-write. A thread owns every tetrahedron it looks
 /// at while inserting a point (the walk's current one, the cavity, the cavity's neighbours), as in
 /// HXT's parallel Delaunay (Marot, Pellerin & Remacle 2019): whoever would change a tetrahedron,
 /// or the neighbour pointer towards it, must own it first.
@@ -94,8 +95,8 @@ public:
         return std::atomic_ref<std::uint8_t>(owner_[t]).load(std::memory_order_relaxed);
     }
 
-    /// Changes the byte of a slot the caller owns (marks it in or out of its cavity, or dead), or
-    /// claims a dead slot that only the caller can hand out (from its block or its free list).
+    /// Changes the byte of a slot the caller owns (marks it in its cavity, or dead), or of a slot
+    /// no thread can reach yet (the bootstrap's).
     void set_owner(TetId t, std::uint8_t value) {
         std::atomic_ref<std::uint8_t>(owner_[t]).store(value, std::memory_order_relaxed);
     }
