@@ -28,19 +28,20 @@ InsertionWorker::InsertionWorker(std::uint8_t id,
 
 InsertionWorker::Outcome InsertionWorker::insert(VertexId u) {
     const Outcome outcome = attempt(u);
+    const ConcurrentMesh::Slots mesh = mesh_.slots();
     for (TetId t : held_) {
-        mesh_.unlock(t);
+        mesh.unlock(t);
     }
     if (outcome == Outcome::kInserted) {
         // The cavity is dead (fill), and stays out of every other thread's reach until this
         // worker hands its slots out again; the new tetrahedra are published.
         for (TetId t : created_) {
-            mesh_.unlock(t);
+            mesh.unlock(t);
         }
     } else {
         // Given up: the cavity found so far stays as it was.
         for (TetId t : cavity_) {
-            mesh_.unlock(t);
+            mesh.unlock(t);
         }
     }
     held_.clear();
@@ -118,11 +119,12 @@ TetId InsertionWorker::start_tet() {
 
 TetId InsertionWorker::walk(TetId start, const Point3& p) {
     Uncounted none;
+    const ConcurrentMesh::Slots mesh = mesh_.slots();
     TetId t = start;
     int entered = -1;
     for (std::size_t step = 0; !bounded_walks_ || step < kMaxWalkSteps; ++step) {
-        const ArrayRecord& r = mesh_.record(t);
-        mesh_.prefetch_neighbours(t);
+        const ArrayRecord& r = mesh.record(t);
+        mesh.prefetch_neighbours(t);
         int exit = -1;
         if (!is_ghost(r.v)) {
             const int first = random_.first_facet();
@@ -151,26 +153,25 @@ TetId InsertionWorker::walk(TetId start, const Point3& p) {
         }
         const HalfFacet across = r.n[static_cast<std::size_t>(exit)];
         const TetId next = tet_of(across);
-        const bool locked = mesh_.try_lock(next, id_);
-        mesh_.unlock(t);
+        const bool locked = mesh.try_lock(next, id_);
+        mesh.unlock(t);
         if (!locked) {
             return kNoTet;
         }
         t = next;
         entered = facet_of(across);
     }
-    mesh_.unlock(t);
+    mesh.unlock(t);
     return kNoTet;
 }
 
-inline bool InsertionWorker::conflicts(TetId t, VertexId u) const {
-    const TetVertices& v = mesh_.record(t).v;
+inline bool InsertionWorker::conflicts(const TetVertices& v, VertexId u) const {
     return is_ghost(v) ? geometry_.conflicts_ghost(v, u, interior_)
                        : geometry_.conflicts_solid(v, u);
 }
 
 TetId InsertionWorker::seek(TetId located, VertexId u, bool& contended) {
-    if (conflicts(located, u)) {
+    if (conflicts(mesh_.record(located).v, u)) {
         return located;
     }
     // Weighted only (unweighted, the closed cell holding a new point always conflicts): the cells
@@ -196,7 +197,7 @@ TetId InsertionWorker::seek(TetId located, VertexId u, bool& contended) {
                 contended = true;
                 return kNoTet;
             }
-            if (conflicts(next, u)) {
+            if (conflicts(mesh_.record(next).v, u)) {
                 return next;
             }
             scratch_.push_back(next);
@@ -207,27 +208,28 @@ TetId InsertionWorker::seek(TetId located, VertexId u, bool& contended) {
 
 bool InsertionWorker::dig(TetId t0, VertexId u) {
     const auto in_cavity = static_cast<std::uint8_t>(id_ | ConcurrentMesh::kCavityBit);
+    const ConcurrentMesh::Slots mesh = mesh_.slots();
     // Breadth-first, as the sequential DigCavity3D (dig_cavity.h): a cavity tetrahedron's faces
     // are looked across only after those of every tetrahedron taken before it, so the prefetch of
     // its neighbours' records has a level of tests to land. `stack_` is the queue: each taken
     // tetrahedron with the face it was entered through.
     const auto look_across = [&](TetId t, int f) __attribute__((always_inline)) {
-        const HalfFacet across = mesh_.record(t).n[static_cast<std::size_t>(f)];
+        const HalfFacet across = mesh.record(t).n[static_cast<std::size_t>(f)];
         const TetId far = tet_of(across);
-        const std::uint8_t owner = mesh_.owner(far);
+        const std::uint8_t owner = mesh.owner(far);
         if (owner == in_cavity) {
             return true;
         }
         // A tetrahedron this attempt locked before (walk, seek, or an earlier cavity face) was
         // found not in conflict, and is not tested into the cavity now: the tests are exact.
         const bool fresh = owner != id_;
-        if (fresh && !mesh_.try_lock(far, id_)) {
+        if (fresh && !mesh.try_lock(far, id_)) {
             return false;
         }
-        if (conflicts(far, u)) {
-            mesh_.set_owner(far, in_cavity);
+        if (conflicts(mesh.record(far).v, u)) {
+            mesh.set_owner(far, in_cavity);
             cavity_.push_back(far);
-            mesh_.prefetch_neighbours(far);
+            mesh.prefetch_neighbours(far);
             stack_.push_back(across);
         } else {
             if (fresh) {
@@ -240,9 +242,9 @@ bool InsertionWorker::dig(TetId t0, VertexId u) {
     stack_.clear();
     // t0 was the last tetrahedron locked (the walk's or the seek's): from held_ into the cavity.
     held_.pop_back();
-    mesh_.set_owner(t0, in_cavity);
+    mesh.set_owner(t0, in_cavity);
     cavity_.push_back(t0);
-    mesh_.prefetch_neighbours(t0);
+    mesh.prefetch_neighbours(t0);
     for (int f = 0; f < 4; ++f) {
         if (!look_across(t0, f)) {
             return false;
@@ -278,24 +280,25 @@ TetId InsertionWorker::new_slot() {
 }
 
 void InsertionWorker::fill(VertexId u) {
+    const ConcurrentMesh::Slots mesh = mesh_.slots();
     created_.clear();
     for (const BoundaryFace& b : boundary_) {
-        const auto [v, u_slot] = cone(facet_vertices(mesh_.record(b.inner).v, b.facet), u);
+        const auto [v, u_slot] = cone(facet_vertices(mesh.record(b.inner).v, b.facet), u);
         const TetId t = new_slot();
-        ArrayRecord& r = mesh_.record(t);
+        ArrayRecord& r = mesh.record(t);
         r.v = v;
         r.n[static_cast<std::size_t>(u_slot)] = b.across;
-        mesh_.record(tet_of(b.across)).n[static_cast<std::size_t>(facet_of(b.across))] =
+        mesh.record(tet_of(b.across)).n[static_cast<std::size_t>(facet_of(b.across))] =
             half_facet(t, u_slot);
         created_.push_back(t);
         if (!is_ghost(v)) {
             last_ = t;
         }
     }
-    ConcurrentMesh::OwnedRecords view{mesh_};
+    ConcurrentMesh::OwnedRecords view{mesh};
     gluer_.glue(view, std::span<const TetId>(created_.begin(), created_.size()), u);
     for (TetId t : cavity_) {
-        mesh_.set_owner(t, ConcurrentMesh::kDead);
+        mesh.set_owner(t, ConcurrentMesh::kDead);
         free_.push_back(t);
     }
 }

@@ -81,7 +81,7 @@ private:
     void fill(VertexId u);
     [[gnu::always_inline]] bool lock(TetId t);
     /// Inlined into the cavity search, as the sequential engine's test (bowyer_watson.h).
-    [[gnu::always_inline]] bool conflicts(TetId t, VertexId u) const;
+    [[gnu::always_inline]] bool conflicts(const TetVertices& v, VertexId u) const;
 
     std::uint8_t id_;
     const Geometry& geometry_;
