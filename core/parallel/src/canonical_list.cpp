@@ -16,7 +16,8 @@ using Tet = std::array<std::uint32_t, 4>;
 /// of the other three, the last two in the orientation's order. The rotation alone carries the
 /// orientation, so the list is sorted and rotated in place, with no slot or key beside it.
 Tet rotated(const TetVertices& v) {
-    const Perm p = canonical_perm(v);
+    // Solid: no ghost vertex to rank below the others, so the ids compare as they are.
+    const Perm p = solid_perm(v, [](VertexId w) { return w; });
     return {v[p[0]], v[p[1]], v[p[2]], v[p[3]]};
 }
 
@@ -26,10 +27,33 @@ std::uint32_t top(const Tet& t) {
 }
 
 /// The canonical order of tetrahedra sharing their highest id: by the other three, highest first.
+/// Written out rather than as arrays compared with <: the three-way compare of std::array cost
+/// about a third of the list's sorting (callgrind, cube 10^5).
 bool before(const Tet& x, const Tet& y) {
-    const std::array<std::uint32_t, 3> kx{std::min(x[2], x[3]), x[1], x[0]};
-    const std::array<std::uint32_t, 3> ky{std::min(y[2], y[3]), y[1], y[0]};
-    return kx < ky;
+    const std::uint32_t x2 = std::min(x[2], x[3]);
+    const std::uint32_t y2 = std::min(y[2], y[3]);
+    if (x2 != y2) {
+        return x2 < y2;
+    }
+    return x[1] != y[1] ? x[1] < y[1] : x[0] < y[0];
+}
+
+/// Sorts a group of tetrahedra sharing their highest id by `before`. Groups have about 6.5
+/// tetrahedra: an insertion sort, where std::sort's moved each new smallest element with a call
+/// to memmove; the rare large group (a vertex inserted with a large star) goes to std::sort.
+void sort_group(Tet* first, Tet* last) {
+    if (last - first > 16) {
+        std::sort(first, last, [](const Tet& x, const Tet& y) { return before(x, y); });
+        return;
+    }
+    for (Tet* i = first + 1; i < last; ++i) {
+        const Tet moving = *i;
+        Tet* j = i;
+        for (; j > first && before(moving, *(j - 1)); --j) {
+            *j = *(j - 1);
+        }
+        *j = moving;
+    }
 }
 
 /// Tetrahedra are first spread into buckets of 2^shift consecutive highest ids, then each bucket
@@ -68,11 +92,7 @@ void sort_bucket(std::span<Tet> bucket,
     std::size_t begin = 0;
     for (std::size_t g = 0; g < width; ++g) {
         const std::size_t end = start[g];
-        if (end - begin > 1) {
-            std::sort(scratch.begin() + static_cast<std::ptrdiff_t>(begin),
-                      scratch.begin() + static_cast<std::ptrdiff_t>(end),
-                      before);
-        }
+        sort_group(scratch.data() + begin, scratch.data() + end);
         begin = end;
     }
     // The stored orientation mirrored, as every list of tetrahedra is handed out

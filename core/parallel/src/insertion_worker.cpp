@@ -28,11 +28,20 @@ InsertionWorker::InsertionWorker(std::uint8_t id,
 
 InsertionWorker::Outcome InsertionWorker::insert(VertexId u) {
     const Outcome outcome = attempt(u);
+    const ConcurrentMesh::Slots mesh = mesh_.slots();
     for (TetId t : held_) {
-        // The cavity of an insertion is dead now (fill), and stays out of every other thread's
-        // reach until this worker hands its slot out again.
-        if (mesh_.owner(t) != ConcurrentMesh::kDead) {
-            mesh_.unlock(t);
+        mesh.unlock(t);
+    }
+    if (outcome == Outcome::kInserted) {
+        // The cavity is dead (fill), and stays out of every other thread's reach until this
+        // worker hands its slots out again; the new tetrahedra are published.
+        for (TetId t : created_) {
+            mesh.unlock(t);
+        }
+    } else {
+        // Given up: the cavity found so far stays as it was.
+        for (TetId t : cavity_) {
+            mesh.unlock(t);
         }
     }
     held_.clear();
@@ -69,7 +78,7 @@ InsertionWorker::Outcome InsertionWorker::attempt(VertexId u) {
     return Outcome::kInserted;
 }
 
-bool InsertionWorker::lock(TetId t) {
+inline bool InsertionWorker::lock(TetId t) {
     if (!mesh_.try_lock(t, id_)) {
         return false;
     }
@@ -109,11 +118,13 @@ TetId InsertionWorker::start_tet() {
 }
 
 TetId InsertionWorker::walk(TetId start, const Point3& p) {
+    Uncounted none;
+    const ConcurrentMesh::Slots mesh = mesh_.slots();
     TetId t = start;
     int entered = -1;
     for (std::size_t step = 0; !bounded_walks_ || step < kMaxWalkSteps; ++step) {
-        const ArrayRecord& r = mesh_.record(t);
-        mesh_.prefetch_neighbours(t);
+        const ArrayRecord& r = mesh.record(t);
+        mesh.prefetch_neighbours(t);
         int exit = -1;
         if (!is_ghost(r.v)) {
             const int first = random_.first_facet();
@@ -123,10 +134,13 @@ TetId InsertionWorker::walk(TetId start, const Point3& p) {
                     continue;
                 }
                 const auto tri = facet_vertices(r.v, f);
-                if (Geometry::orient3d(geometry_.point(tri[0]),
-                                       geometry_.point(tri[1]),
-                                       geometry_.point(tri[2]),
-                                       p) == Sign::kNeg) {
+                // The points inserted in parallel are explicit input points, all in the box, so
+                // the static filter holds (the sequential walk's test).
+                if (geometry_.orient3d_in_box(geometry_.point(tri[0]),
+                                              geometry_.point(tri[1]),
+                                              geometry_.point(tri[2]),
+                                              p,
+                                              none) == Sign::kNeg) {
                     exit = f;
                 }
             }
@@ -139,26 +153,25 @@ TetId InsertionWorker::walk(TetId start, const Point3& p) {
         }
         const HalfFacet across = r.n[static_cast<std::size_t>(exit)];
         const TetId next = tet_of(across);
-        const bool locked = mesh_.try_lock(next, id_);
-        mesh_.unlock(t);
+        const bool locked = mesh.try_lock(next, id_);
+        mesh.unlock(t);
         if (!locked) {
             return kNoTet;
         }
         t = next;
         entered = facet_of(across);
     }
-    mesh_.unlock(t);
+    mesh.unlock(t);
     return kNoTet;
 }
 
-bool InsertionWorker::conflicts(TetId t, VertexId u) const {
-    const TetVertices& v = mesh_.record(t).v;
+inline bool InsertionWorker::conflicts(const TetVertices& v, VertexId u) const {
     return is_ghost(v) ? geometry_.conflicts_ghost(v, u, interior_)
                        : geometry_.conflicts_solid(v, u);
 }
 
 TetId InsertionWorker::seek(TetId located, VertexId u, bool& contended) {
-    if (conflicts(located, u)) {
+    if (conflicts(mesh_.record(located).v, u)) {
         return located;
     }
     // Weighted only (unweighted, the closed cell holding a new point always conflicts): the cells
@@ -184,7 +197,7 @@ TetId InsertionWorker::seek(TetId located, VertexId u, bool& contended) {
                 contended = true;
                 return kNoTet;
             }
-            if (conflicts(next, u)) {
+            if (conflicts(mesh_.record(next).v, u)) {
                 return next;
             }
             scratch_.push_back(next);
@@ -195,36 +208,55 @@ TetId InsertionWorker::seek(TetId located, VertexId u, bool& contended) {
 
 bool InsertionWorker::dig(TetId t0, VertexId u) {
     const auto in_cavity = static_cast<std::uint8_t>(id_ | ConcurrentMesh::kCavityBit);
-    stack_.clear();
-    mesh_.set_owner(t0, in_cavity);
-    cavity_.push_back(t0);
-    for (int f = 0; f < 4; ++f) {
-        stack_.push_back(half_facet(t0, f));
-    }
-    while (!stack_.empty()) {
-        const HalfFacet top = stack_.pop_back();
-        const TetId t = tet_of(top);
-        const int f = facet_of(top);
-        const HalfFacet across = mesh_.record(t).n[static_cast<std::size_t>(f)];
+    const ConcurrentMesh::Slots mesh = mesh_.slots();
+    // Breadth-first, as the sequential DigCavity3D (dig_cavity.h): a cavity tetrahedron's faces
+    // are looked across only after those of every tetrahedron taken before it, so the prefetch of
+    // its neighbours' records has a level of tests to land. `stack_` is the queue: each taken
+    // tetrahedron with the face it was entered through.
+    const auto look_across = [&](TetId t, int f) __attribute__((always_inline)) {
+        const HalfFacet across = mesh.record(t).n[static_cast<std::size_t>(f)];
         const TetId far = tet_of(across);
-        const std::uint8_t owner = mesh_.owner(far);
+        const std::uint8_t owner = mesh.owner(far);
         if (owner == in_cavity) {
-            continue;
+            return true;
         }
-        if (owner != id_ && !lock(far)) {
+        // A tetrahedron this attempt locked before (walk, seek, or an earlier cavity face) was
+        // found not in conflict, and is not tested into the cavity now: the tests are exact.
+        const bool fresh = owner != id_;
+        if (fresh && !mesh.try_lock(far, id_)) {
             return false;
         }
-        if (conflicts(far, u)) {
-            mesh_.set_owner(far, in_cavity);
+        if (conflicts(mesh.record(far).v, u)) {
+            mesh.set_owner(far, in_cavity);
             cavity_.push_back(far);
-            mesh_.prefetch_neighbours(far);
-            for (int g = 0; g < 4; ++g) {
-                if (g != facet_of(across)) {
-                    stack_.push_back(half_facet(far, g));
-                }
-            }
+            mesh.prefetch_neighbours(far);
+            stack_.push_back(across);
         } else {
+            if (fresh) {
+                held_.push_back(far);
+            }
             boundary_.push_back({t, f, across});
+        }
+        return true;
+    };
+    stack_.clear();
+    // t0 was the last tetrahedron locked (the walk's or the seek's): from held_ into the cavity.
+    held_.pop_back();
+    mesh.set_owner(t0, in_cavity);
+    cavity_.push_back(t0);
+    mesh.prefetch_neighbours(t0);
+    for (int f = 0; f < 4; ++f) {
+        if (!look_across(t0, f)) {
+            return false;
+        }
+    }
+    for (std::size_t next = 0; next < stack_.size(); ++next) {
+        const HalfFacet entered = stack_[next];
+        const TetId t = tet_of(entered);
+        for (int g = 0; g < 4; ++g) {
+            if (g != facet_of(entered) && !look_across(t, g)) {
+                return false;
+            }
         }
     }
     return true;
@@ -243,31 +275,30 @@ bool InsertionWorker::reserve_slots(std::size_t count) {
 
 TetId InsertionWorker::new_slot() {
     // A dead slot of this worker's: no other thread can lock it (try_lock takes live ones only).
-    const TetId t = free_.empty() ? block_.first++ : free_.pop_back();
-    mesh_.set_owner(t, id_);
-    held_.push_back(t);
-    return t;
+    // It stays dead until insert() publishes it (unlock's release store, after every write).
+    return free_.empty() ? block_.first++ : free_.pop_back();
 }
 
 void InsertionWorker::fill(VertexId u) {
+    const ConcurrentMesh::Slots mesh = mesh_.slots();
     created_.clear();
     for (const BoundaryFace& b : boundary_) {
-        const auto [v, u_slot] = cone(facet_vertices(mesh_.record(b.inner).v, b.facet), u);
+        const auto [v, u_slot] = cone(facet_vertices(mesh.record(b.inner).v, b.facet), u);
         const TetId t = new_slot();
-        ArrayRecord& r = mesh_.record(t);
+        ArrayRecord& r = mesh.record(t);
         r.v = v;
         r.n[static_cast<std::size_t>(u_slot)] = b.across;
-        mesh_.record(tet_of(b.across)).n[static_cast<std::size_t>(facet_of(b.across))] =
+        mesh.record(tet_of(b.across)).n[static_cast<std::size_t>(facet_of(b.across))] =
             half_facet(t, u_slot);
         created_.push_back(t);
         if (!is_ghost(v)) {
             last_ = t;
         }
     }
-    ConcurrentMesh::OwnedRecords view{mesh_};
+    ConcurrentMesh::OwnedRecords view{mesh};
     gluer_.glue(view, std::span<const TetId>(created_.begin(), created_.size()), u);
     for (TetId t : cavity_) {
-        mesh_.set_owner(t, ConcurrentMesh::kDead);
+        mesh.set_owner(t, ConcurrentMesh::kDead);
         free_.push_back(t);
     }
 }

@@ -79,8 +79,9 @@ private:
     bool reserve_slots(std::size_t count);
     TetId new_slot();
     void fill(VertexId u);
-    bool lock(TetId t);
-    bool conflicts(TetId t, VertexId u) const;
+    [[gnu::always_inline]] bool lock(TetId t);
+    /// Inlined into the cavity search, as the sequential engine's test (bowyer_watson.h).
+    [[gnu::always_inline]] bool conflicts(const TetVertices& v, VertexId u) const;
 
     std::uint8_t id_;
     const Geometry& geometry_;
@@ -90,7 +91,9 @@ private:
     TetId last_ = kNoTet;
     bool bounded_walks_ = true;
     VertexId last_vertex_ = kNoVertex;
-    PodStack<TetId> held_;  ///< every slot this attempt locked (cavity and new ones included)
+    /// The live slots this attempt locked and kept out of its cavity (the cavity's are in cavity_,
+    /// the new ones in created_).
+    PodStack<TetId> held_;
     PodStack<TetId> cavity_;
     PodStack<BoundaryFace> boundary_;
     PodStack<HalfFacet> stack_;
