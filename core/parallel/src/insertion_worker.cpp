@@ -22,9 +22,7 @@ InsertionWorker::InsertionWorker(std::uint8_t id,
                                  ConcurrentMesh& mesh,
                                  const std::array<VertexId, 4>& interior,
                                  std::uint64_t seed)
-    : id_(id), geometry_(geometry), mesh_(mesh), interior_(interior), random_(seed | 1u) {
-    gluer_.reserve(geometry.size());
-}
+    : id_(id), geometry_(geometry), mesh_(mesh), interior_(interior), random_(seed | 1u) {}
 
 InsertionWorker::Outcome InsertionWorker::insert(VertexId u) {
     const Outcome outcome = attempt(u);

@@ -33,11 +33,6 @@ namespace cavity::core {
 /// lookup.
 class CavityGluer {
 public:
-    /// Nothing to make room for: the table has a fixed size and numbers any vertex id, the ghost
-    /// vertex included. Left only for the parallel construction's worker, which still calls it;
-    /// it goes with that call.
-    void reserve(std::size_t /*vertices*/) {}
-
     /// Glues the faces through `apex` of the tetrahedra `created`, each of which has `apex` as a
     /// vertex (any ids but kNoVertex).
     template <class Storage>
