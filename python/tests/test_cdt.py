@@ -507,14 +507,13 @@ def poly_cdt():
 
 
 def test_poly_fixture_as_the_cli_reports_it(poly_cdt):
-    # `cavity cdt tests/cli/data/cdt_insert.poly --protect` prints "protecting vertex 12:
-    # 1.994140625 0.7490234375 1.498046875" (the split aims at the point nearest the midpoint
-    # that frees the edge of the encroaching vertex, on a dyadic parameter) and "13 points (1
-    # inserted for protection), 1 polygons: 32 tetrahedra, 2 polygon triangles".
+    # `cavity cdt tests/cli/data/cdt_insert.poly --protect` prints "protecting vertex 12: 2 0.75
+    # 1.5" (the vertex that encroaches is an input vertex, so the split halves the edge) and "13
+    # points (1 inserted for protection), 1 polygons: 32 tetrahedra, 2 polygon triangles".
     c = poly_cdt
     assert c.npoints == 13 and c.nsimplex == 32 and len(c.faces) == 2
     assert np.array_equal(c.steiner, [12])
-    assert np.array_equal(c.points[12], [1.994140625, 0.7490234375, 1.498046875])
+    assert np.array_equal(c.points[12], [2, 0.75, 1.5])
     assert np.array_equal(c.face_markers, [7, 7])
     assert_positive(c)
 

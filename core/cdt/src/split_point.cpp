@@ -23,11 +23,6 @@ Point3 minus(const Point3& u, const Point3& v) {
     return {u.x - v.x, u.y - v.y, u.z - v.z};
 }
 
-double distance(const Point3& u, const Point3& v) {
-    const Point3 d = minus(u, v);
-    return std::sqrt(dot(d, d));
-}
-
 bool same(const Point3& p, const Point3& q) {
     return p.x == q.x && p.y == q.y && p.z == q.z;
 }
@@ -61,19 +56,9 @@ SplitTarget around(double t) {
 
 }  // namespace
 
-SplitTarget split_target(const Point3& p, const Point3& q, const std::optional<SplitAim>& aim) {
-    if (!aim) {
+SplitTarget split_target(const Point3& p, const Point3& q, const std::optional<Point3>& reference) {
+    if (!reference) {
         return around(0.5);
-    }
-    if (aim->shell_centre) {
-        // The sphere about the shared input vertex c through the reference: the piece's ends are
-        // at distances dp and dq from c along the segment.
-        const Point3& c = *aim->shell_centre;
-        const double dp = distance(p, c);
-        const double dq = distance(q, c);
-        const double t = (distance(aim->reference, c) - dp) / (dq - dp);
-        // Written so that NaN (a degenerate piece in doubles) takes the midpoint too.
-        return t >= kLowestAim && t <= 1 - kLowestAim ? around(t) : around(0.5);
     }
     // In units of |pq|, the reference w projects at s with squared height h2. A split at m leaves
     // w outside the closed diametral balls of both pieces, (w - p).(w - m) > 0 and
@@ -82,7 +67,7 @@ SplitTarget split_target(const Point3& p, const Point3& q, const std::optional<S
     // around w must resolve; the point of the interval nearest the midpoint keeps the pieces even
     // and the new vertex as far from w as freeing the piece allows.
     const Point3 d = minus(q, p);
-    const Point3 w = minus(aim->reference, p);
+    const Point3 w = minus(*reference, p);
     const double length2 = dot(d, d);
     const double s = dot(w, d) / length2;
     if (!(s > 0 && s < 1)) {

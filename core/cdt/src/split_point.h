@@ -6,23 +6,15 @@
 
 /// Where edge protection splits a missing piece pq of a PLC segment. After Si & Shewchuk 2014's
 /// reference point rule, as TetGen's segment recovery uses it, the vertex w that encroaches most
-/// upon pq aims the split, so that w encroaches neither piece; of the points that do that (the
-/// projection of w is one), the one nearest the midpoint, which keeps the pieces even and the new
-/// vertex as far from w as freeing pq allows (a split at the projection makes a feature as small
-/// as w's height, which cascades). When w lies on another segment from a shared input vertex c:
-/// on the sphere about c through w (concentric shells, so that splits near a small input angle do
-/// not cascade). At the midpoint when the aim falls near an end. Only the count of points depends
-/// on the choice: every point made is exactly on the segment.
+/// upon pq aims the split when w is a split point itself, so that w encroaches neither piece; of
+/// the points that do that (the projection of w is one), the one nearest the midpoint, which keeps
+/// the pieces even and the new vertex as far from w as freeing pq allows. When w is an input
+/// vertex, or the aim falls near an end: at the midpoint. Only the count of points depends on the
+/// choice: every point made is exactly on the segment.
 namespace cavity::core {
 
 using predicates::GenericPoint3;
 using predicates::Point3;
-
-/// The vertex that aims a split, and the shell centre when the rule is the shell's.
-struct SplitAim {
-    Point3 reference;
-    std::optional<Point3> shell_centre;
-};
 
 /// Where the split of a piece pq aims, as parameters t of p + t (q - p): `target`, and the window
 /// [lo, hi] around it in which a point with double coordinates may stand in for it.
@@ -32,11 +24,11 @@ struct SplitTarget {
     double hi;
 };
 
-/// Where the split of pq aims, computed in doubles (it needs no exactness): without an aim, the
-/// midpoint; on a shell, the sphere's parameter; else the parameter nearest 1/2 of those that
-/// leave the reference outside both pieces' diametral balls (its projection is one), with a
-/// window kept inside them. The midpoint whenever the aim falls outside [0.2, 0.8].
-SplitTarget split_target(const Point3& p, const Point3& q, const std::optional<SplitAim>& aim);
+/// Where the split of pq aims, computed in doubles (it needs no exactness): without a reference,
+/// the midpoint; else the parameter nearest 1/2 of those that leave the reference outside both
+/// pieces' diametral balls (its projection is one), with a window kept inside them. The midpoint
+/// whenever the aim falls outside [0.2, 0.8].
+SplitTarget split_target(const Point3& p, const Point3& q, const std::optional<Point3>& reference);
 
 /// A point exactly on the open piece pq (p, q as protect_edges made them: input points, double
 /// points on a segment, or SegmentParameterPoints of one base edge) near `target.target` of pq: a

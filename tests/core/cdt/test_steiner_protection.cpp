@@ -192,7 +192,7 @@ TEST(SplitTarget, FreesThePieceOfItsReferenceNearestTheMidpoint) {
     const std::vector<Point3> references{
         {3.1, 0.6, 0.3}, {4.95, 0.8, 0.55}, {6.7, 1.2, 0.4}, {3.9, 2.9, 0.6}};
     for (const Point3& w : references) {
-        const SplitTarget s = split_target(p, q, SplitAim{w, std::nullopt});
+        const SplitTarget s = split_target(p, q, w);
         ASSERT_LE(s.lo, s.target);
         ASSERT_LE(s.target, s.hi);
         const ExactPoint ew = exact_point(w);
@@ -212,7 +212,7 @@ TEST(SplitTarget, FreesThePieceOfItsReferenceNearestTheMidpoint) {
         EXPECT_NE(s.target, projection);
     }
     // High in the ball the midpoint already frees the piece.
-    EXPECT_EQ(split_target(p, q, SplitAim{references.back(), std::nullopt}).target, 0.5);
+    EXPECT_EQ(split_target(p, q, references.back()).target, 0.5);
     // Without a reference: the midpoint.
     EXPECT_EQ(split_target(p, q, std::nullopt).target, 0.5);
 }
@@ -222,7 +222,7 @@ TEST(SplitTarget, FreesThePieceOfItsReferenceNearestTheMidpoint) {
 TEST(SplitTarget, DoublePointsStayInTheWindow) {
     const Point3 p{0.1, 0.2, 0.3};
     const Point3 q{9.7, 1.3, 0.7};
-    const SplitTarget s = split_target(p, q, SplitAim{{3.1, 0.6, 0.3}, std::nullopt});
+    const SplitTarget s = split_target(p, q, Point3{3.1, 0.6, 0.3});
     const auto m = split_point(GenericPoint3(p), GenericPoint3(q), s);
     ASSERT_TRUE(m);
     const ExactPoint em = exact_point(*m);

@@ -73,9 +73,9 @@ std::optional<Point3> protection_point(
 /// incremental segment recovery, as TetGen does it): a first-in first-out queue, from the sorted
 /// missing edges, whose next edge is skipped when it has become a Delaunay edge and else split,
 /// its two pieces queued; when the queue runs empty every piece is checked again (a later point
-/// can take an edge away). Where it splits is split_point.h's rule: at the projection of the
-/// vertex that encroaches most, on the sphere about a shared input vertex when that vertex lies
-/// on an adjacent segment, else at the midpoint; at a point with double coordinates
+/// can take an edge away). Where it splits is split_point.h's rule: where the vertex that
+/// encroaches most stops encroaching, nearest the midpoint, when that vertex is a split point,
+/// else at the midpoint; at a point with double coordinates
 /// (protection_point) when the piece's ends are doubles and one lies near the aim, else at an
 /// implicit point (predicates::SegmentParameterPoint, exactly on the segment) of the edge between
 /// doubles it was first made on, at a dyadic parameter n / 2^j whose numerator and denominator are
