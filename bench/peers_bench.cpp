@@ -65,7 +65,7 @@ Run since(const Stamp& start, std::size_t tets) {
 /// keeps the sequence: the peak holds one copy of each.
 Run run_cavity(cavity::core::PointSet& points, unsigned threads) {
     const Stamp start;
-    cavity::core::OrderOptions order;  // the defaults: BRIO, ratio 1/2, Hilbert within rounds
+    cavity::core::OrderOptions order;  // the defaults: BRIO, ratio 1/8, Hilbert within rounds
     order.threads = std::max(1u, threads);
     auto sequence = cavity::core::make_insertion_order(points.points, order).sequence;
     cavity::core::TriangulateOptions options;

@@ -181,6 +181,42 @@ bool outside_ball(const ExactPoint& w, const ExactPoint& a, const ExactPoint& b)
     return dot(minus(a, w), minus(b, w)) > 0;
 }
 
+/// A cone over a fan of thin triangles that meet at the origin at `degrees` each, their far corners
+/// at radii cycling through `radii` (so the fan's edges encroach on one another), and an apex above
+/// the fan. Segments meeting at small angles are where split rules cascade.
+Plc acute_fan(int wedges, double degrees, const std::vector<double>& radii) {
+    std::vector<Point3> pts{{0, 0, 0}};
+    for (int i = 0; i <= wedges; ++i) {
+        const double t = i * degrees * std::acos(-1.0) / 180;
+        const double r = radii[static_cast<std::size_t>(i) % radii.size()];
+        pts.push_back({r * std::cos(t), r * std::sin(t), 0});
+    }
+    const double half = wedges * degrees / 2 * std::acos(-1.0) / 180;
+    pts.push_back({std::cos(half), std::sin(half), 1});
+    const auto apex = static_cast<std::uint32_t>(pts.size() - 1);
+    const auto n = static_cast<std::uint32_t>(wedges);
+    std::vector<test::Loops> facets;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        facets.push_back({{0, i + 2, i + 1}});
+        facets.push_back({{i + 1, i + 2, apex}});
+    }
+    facets.push_back({{0, 1, apex}});
+    facets.push_back({{n + 1, 0, apex}});
+    return test::make_plc(pts, facets);
+}
+
+TEST(SteinerProtection, AcuteFansEndAndValidate) {
+    for (const Plc& plc : {acute_fan(10, 0.5, {10, 6}), acute_fan(8, 2, {10, 9.5})}) {
+        const Cdt cdt = build_cdt(plc, CdtOptions{true});
+        // A few tens to a few hundred points with the split rule of this file's tests; a cascade
+        // runs into the thousands (0.2-degree wedges took 3771 points, too slow for a unit test).
+        EXPECT_LT(cdt.protection.inserted.size(), 1000u);
+        EXPECT_TRUE(validate_cdt(cdt.plc, cdt.tets).ok());
+        const CarvedCdt domain = carve_cdt(cdt, false);
+        EXPECT_TRUE(validate_cdt(cdt.plc, domain.tets, CdtDomain::kCarved).ok());
+    }
+}
+
 /// The split frees the piece of the vertex that aims it: a split anywhere in its window leaves
 /// the reference outside both pieces' diametral balls, and of those splits it takes the one
 /// nearest the midpoint, not the projection (which makes the new vertex as near the reference
