@@ -14,6 +14,7 @@
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/plc_validity.h"
 #include "cavity/core/live/delaunay_triangulation.h"
+#include "cavity/core/mesh/star.h"
 #include "exact_plane.h"
 #include "split_point.h"
 
@@ -166,31 +167,13 @@ public:
     std::vector<TetId> star(std::uint32_t i) {
         const ArrayStorage& storage = dt_.storage();
         const VertexId v = vertex_[i];
-        std::vector<TetId> star;
-        const TetId start = storage.tet_at_vertex(v);
-        if (start == kNoTet) {
-            return star;
-        }
         if (found_.size() < storage.capacity()) {
             found_.resize(storage.capacity(), 0);
         }
         ++search_;
-        star.push_back(start);
-        found_[start] = search_;
-        for (std::size_t k = 0; k < star.size(); ++k) {
-            const TetId t = star[k];
-            const TetVertices& w = storage.vertices(t);
-            for (int f = 0; f < 4; ++f) {
-                if (w[static_cast<std::size_t>(f)] == v) {
-                    continue;  // the facet opposite v leaves the star
-                }
-                const HalfFacet h = storage.adjacent(t, f);
-                if (h != kNoHalfFacet && std::exchange(found_[tet_of(h)], search_) != search_) {
-                    star.push_back(tet_of(h));
-                }
-            }
-        }
-        return star;
+        return vertex_star(storage, v, [&](const std::vector<TetId>&, TetId t) {
+            return std::exchange(found_[t], search_) != search_;
+        });
     }
 
     /// True when point j is a vertex of one of the tetrahedra `star`.

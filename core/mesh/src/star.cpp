@@ -44,26 +44,9 @@ EdgeRing edge_ring(const ArrayStorage& storage, TetId t, int i, int j) {
 }
 
 std::vector<TetId> vertex_star(const ArrayStorage& storage, VertexId v) {
-    std::vector<TetId> star;
-    const TetId start = storage.tet_at_vertex(v);
-    if (start == kNoTet) {
-        return star;
-    }
-    star.push_back(start);
-    for (std::size_t k = 0; k < star.size(); ++k) {
-        const TetId t = star[k];
-        const TetVertices& w = storage.vertices(t);
-        for (int f = 0; f < 4; ++f) {
-            if (w[static_cast<std::size_t>(f)] == v) {
-                continue;  // the facet opposite v leaves the star
-            }
-            const HalfFacet h = storage.adjacent(t, f);
-            if (h != kNoHalfFacet && std::find(star.begin(), star.end(), tet_of(h)) == star.end()) {
-                star.push_back(tet_of(h));
-            }
-        }
-    }
-    return star;
+    return vertex_star(storage, v, [](const std::vector<TetId>& star, TetId t) {
+        return std::find(star.begin(), star.end(), t) == star.end();
+    });
 }
 
 }  // namespace cavity::core

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "cavity/core/mesh/array_storage.h"
@@ -23,6 +24,35 @@ EdgeRing edge_ring(const ArrayStorage& storage, TetId t, int i, int j);
 /// The live tetrahedra with vertex v (solid and ghost), found by a search across the facets that
 /// contain v, starting at Adjacent2Vertex(v). Empty when v is not a vertex.
 std::vector<TetId> vertex_star(const ArrayStorage& storage, VertexId v);
+
+/// vertex_star, with the caller keeping track of the tetrahedra reached: `first_reach(star, t)`
+/// returns whether t is reached for the first time (the tetrahedra so far are `star`) and
+/// remembers it. vertex_star looks t up in `star`, quadratic in the star's size; a caller that
+/// gathers many large stars (edge protection) marks tetrahedra instead. Same order either way.
+template <class FirstReach>
+std::vector<TetId> vertex_star(const ArrayStorage& storage, VertexId v, FirstReach&& first_reach) {
+    std::vector<TetId> star;
+    const TetId start = storage.tet_at_vertex(v);
+    if (start == kNoTet) {
+        return star;
+    }
+    first_reach(star, start);
+    star.push_back(start);
+    for (std::size_t k = 0; k < star.size(); ++k) {
+        const TetId t = star[k];
+        const TetVertices& w = storage.vertices(t);
+        for (int f = 0; f < 4; ++f) {
+            if (w[static_cast<std::size_t>(f)] == v) {
+                continue;  // the facet opposite v leaves the star
+            }
+            const HalfFacet h = storage.adjacent(t, f);
+            if (h != kNoHalfFacet && first_reach(star, tet_of(h))) {
+                star.push_back(tet_of(h));
+            }
+        }
+    }
+    return star;
+}
 
 /// The slot of vertex v in t, or -1.
 int slot_of(const TetVertices& t, VertexId v);
