@@ -114,7 +114,15 @@ double volume(const std::vector<core::Point3>& pts, const std::vector<core::Tet>
 }
 
 void run_cdt(const CdtArgs& args) {
-    core::Plc plc = core::read_plc(args.input);
+    std::size_t warped = 0;
+    core::Plc plc = core::read_plc(args.input, &warped);
+    if (warped > 0 && !args.quiet) {
+        std::fprintf(stderr,
+                     "cavity: note: %s: %zu polygon faces whose corners are not coplanar were cut "
+                     "into triangles\n",
+                     args.input.c_str(),
+                     warped);
+    }
     core::LiveCdt live(std::move(plc), core::CdtOptions{args.protect});
     if (!args.insert.empty()) {
         insert_points(live, args);

@@ -81,7 +81,7 @@ public:
     FacetReport(const Plc& plc, std::size_t f, std::vector<std::string>& out)
         : plc_(plc), facet_(plc.facets[f]), out_(out) {
         const auto base = static_cast<std::size_t>(plc.points.index_base);
-        label_ = "facet " + std::to_string(facet_.line == 0 ? f + base : facet_.number);
+        label_ = "facet " + std::to_string(facet_.number.value_or(f + base));
     }
 
     void add(const std::string& what) {

@@ -17,7 +17,7 @@ namespace {
 
 /// A facet's geometry, decided exactly; fails with the file and the facet's header line.
 void check_facet(const Plc& plc, const PlcFacet& facet) {
-    const std::string name = "facet " + std::to_string(facet.number);
+    const std::string name = "facet " + std::to_string(*facet.number);
     const auto plane = ExactPlane::of_facet(plc, facet);
     if (!plane && !facet.loops.empty()) {
         fail_at(plc, facet, name + ": its corners are collinear");

@@ -6,10 +6,13 @@ namespace cavity::core {
 
 std::string facet_name(const Plc& plc, std::size_t f) {
     const PlcFacet& facet = plc.facets[f];
-    if (facet.line == 0) {
+    if (!facet.number) {
         return "facet " + std::to_string(f + static_cast<std::size_t>(plc.points.index_base));
     }
-    return "facet " + std::to_string(facet.number) + " (line " + std::to_string(facet.line) + ")";
+    if (facet.line == 0) {
+        return "facet " + std::to_string(*facet.number);  // a binary file's
+    }
+    return "facet " + std::to_string(*facet.number) + " (line " + std::to_string(facet.line) + ")";
 }
 
 std::vector<std::array<std::uint32_t, 2>> plc_edges(const Plc& plc) {

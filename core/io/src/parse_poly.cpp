@@ -196,7 +196,7 @@ void add_polygon(PolyParser& in,
 
 /// A facet of TetGen's .smesh: one polygon on one line, `<#corners> c1 c2 ... [<marker>]`.
 void read_smesh_facet(PolyParser& in, Plc& plc, bool markers, PlcFacet facet) {
-    const auto tokens = in.next("facet " + std::to_string(facet.number));
+    const auto tokens = in.next("facet " + std::to_string(*facet.number));
     facet.line = in.line();
     const std::uint64_t corners = in.bounded_count(tokens[0], "number of corners");
     if (tokens.size() != corners + 1 && !(markers && tokens.size() == corners + 2)) {

@@ -13,12 +13,14 @@
 #include "cavity/core/base/random.h"
 #include "cavity/core/cdt/read_plc.h"
 #include "cavity/core/cdt/surface_validity.h"
+#include "cavity/core/io/surface_mesh.h"
 #include "cavity/predicates/orient3d.h"
 #include "plc_builders.h"
 #include "temp_dir.h"
 // White-box: the triangle tests are internal to the core.
 #include "../../../core/cdt/src/ear_clipping.h"
 #include "../../../core/cdt/src/triangle_intersection.h"
+#include "../../../core/cdt/src/warped_facets.h"
 
 namespace cavity::core {
 namespace {
@@ -222,6 +224,68 @@ TEST(SurfaceValidity, ReadPlcChecksSurfacesButNotPoly) {
     const Plc poly =
         read_plc(dir.write("one.poly", "3 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n1 0\n1\n3 0 1 2\n"));
     EXPECT_EQ(poly.facets.size(), 1u);
+}
+
+// --- warped faces ---------------------------------------------------------------------------
+
+/// The unit cube as OFF with six quads, outward; corner 6 (1,1,1) moved to (1,1,1+dz) and corner
+/// 2's x to 1+dx. Face k is on line 11 + k.
+std::string warped_cube_off(const std::string& dz, const std::string& dx) {
+    return "OFF\n8 6 0\n0 0 0\n1 0 0\n" + dx + " 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 " + dz +
+           "\n0 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+}
+
+TEST(WarpedFacets, NonCoplanarFacesAreReadAsTheirTriangles) {
+    test::TempDir dir;
+    // 2^-40 off the plane: a rounded quad, as CAD exports have them. Of the faces at corner 6, the
+    // top (1) is warped; the right and back ones (x = 1, y = 1) stay planar, as do the others.
+    std::size_t warped = 0;
+    const Plc plc =
+        read_plc(dir.write("warped.off", warped_cube_off("1.0000000000009095", "1")), &warped);
+    EXPECT_EQ(warped, 1u);
+    ASSERT_EQ(plc.facets.size(), 7u);
+    std::size_t quads = 0;
+    for (const PlcFacet& f : plc.facets) {
+        ASSERT_EQ(f.loops.size(), 1u);
+        quads += f.loops[0].size() == 4 ? 1 : 0;
+        // Every piece is planar and keeps the face's number and line.
+        ASSERT_TRUE(f.number);
+        EXPECT_EQ(f.line, 11 + *f.number);
+    }
+    EXPECT_EQ(quads, 5u);
+    EXPECT_TRUE(surface_defects(plc).empty());
+    // The pieces of face 1 cover it: same corners, each triangle turning the face's way.
+    std::vector<std::uint32_t> corners;
+    for (const PlcFacet& f : plc.facets) {
+        if (f.number == 1) {
+            corners.insert(corners.end(), f.loops[0].begin(), f.loops[0].end());
+            const auto& p = plc.points.points;
+            const auto& t = f.loops[0];
+            EXPECT_GT((p[t[1]].x - p[t[0]].x) * (p[t[2]].y - p[t[0]].y) -
+                          (p[t[1]].y - p[t[0]].y) * (p[t[2]].x - p[t[0]].x),
+                      0);
+        }
+    }
+    std::sort(corners.begin(), corners.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    EXPECT_EQ(corners, (std::vector<std::uint32_t>{4, 5, 6, 7}));
+    // A planar cube is left alone.
+    const Plc flat = read_plc(dir.write("flat.off", warped_cube_off("1", "1")), &warped);
+    EXPECT_EQ(warped, 0u);
+    EXPECT_EQ(flat.facets.size(), 6u);
+}
+
+TEST(WarpedFacets, AFaceWithNoSimpleProjectionIsStillRefused) {
+    test::TempDir dir;
+    // Corner 2 pulled across the bottom face (x = -1, far below the others' plane too): the bottom
+    // quad 0 3 2 1 folds over itself in every projection and is named, not cut.
+    Plc plc = read_surface_mesh(dir.write("folded.off", warped_cube_off("1", "-1")));
+    plc.points.points[2].z = -0.5;
+    split_warped_facets(plc);
+    const SurfaceDefects d = surface_defects(plc);
+    ASSERT_FALSE(d.degenerate.empty()) << describe_defects(plc, d, 10);
+    EXPECT_EQ(d.degenerate[0].facet, 0u);
+    EXPECT_NE(d.degenerate[0].why.find("not in the plane"), std::string::npos);
 }
 
 // --- ear clipping ---------------------------------------------------------------------------

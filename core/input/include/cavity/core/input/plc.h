@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,10 @@ struct PlcFacet {
     std::vector<std::vector<std::uint32_t>> loops;
     std::vector<Point3> holes;
     int marker = 0;
-    std::size_t line = 0;    ///< line of the facet header in the .poly file (0: not from a file)
-    std::size_t number = 0;  ///< position in the file's facet list, numbered like the points
+    std::size_t line = 0;  ///< line of the facet header in the file (0: not from a text file)
+    /// Position in the file's facet list, numbered like the points; none for a PLC built in code.
+    /// Kept by every piece when the reader cuts a face (warped_facets.h).
+    std::optional<std::size_t> number{};
 };
 
 /// A region seed of a .poly file (TetGen's region list): the tetrahedra reachable from the one
@@ -55,8 +58,8 @@ struct Plc {
     std::string source;
 };
 
-/// "facet N (line L)" with N as the file numbers its facets; for a PLC not read from a file (line
-/// 0), N is the position in `facets` plus points.index_base.
+/// "facet N (line L)" with N as the file numbers its facets (a binary file's: "facet N"); for a PLC
+/// built in code (no number), N is the position in `facets` plus points.index_base.
 std::string facet_name(const Plc& plc, std::size_t f);
 
 /// Every PLC edge (the explicit segments and the sides of every loop), each once as {min, max}.
