@@ -46,7 +46,7 @@ struct ExactPoints {
 
 /// The box of the points `ids` in doubles (box_grid.h): min and max are exact, so a box test never
 /// drops a simplex that meets a facet; it only spares exact tests of those that cannot. Implicit
-/// points are boxed by their coordinates rounded toward zero, a monotone rounding, which keeps
+/// points are boxed by their coordinates rounded to nearest, a monotone rounding, which keeps
 /// that true.
 template <class Ids>
 Box box_of(const std::vector<Point3>& pts, const Ids& ids) {

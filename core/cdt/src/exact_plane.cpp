@@ -208,7 +208,7 @@ Point3 rounded_point(const predicates::GenericPoint3& g) {
     if (const auto* p = std::get_if<Point3>(&g)) {
         return *p;
     }
-    // mpq_get_d truncates toward zero.
+    // Boost rounds a rational to the nearest double (mpq_get_d, see truncated(), would not).
     const ExactPoint e = exact_point(g);
     return {e[0].convert_to<double>(), e[1].convert_to<double>(), e[2].convert_to<double>()};
 }

@@ -28,7 +28,7 @@ ExactPoint exact_point(const Point3& p);
 /// The exact rational coordinates of an input or implicit point (generic_point.h).
 ExactPoint exact_point(const predicates::GenericPoint3& g);
 
-/// The point rounded to doubles coordinate by coordinate, toward zero: a monotone rounding, so
+/// The point rounded to doubles coordinate by coordinate, to nearest: a monotone rounding, so
 /// that boxes of rounded points meet (contain) whenever the exact points' boxes do, and serve as
 /// a broad phase. Edge protection stores implicit points' coordinates this way.
 Point3 rounded_point(const predicates::GenericPoint3& g);

@@ -42,7 +42,7 @@ std::string exact_points_text(const PointSet& points) {
         }
     }
     std::string text =
-        "# cavity: exact Steiner points; the .node file has them rounded toward zero\n"
+        "# cavity: exact Steiner points; the .node file has them rounded to nearest\n"
         "# INDEX segment A B NUMERATOR DENOMINATOR : X Y Z   (a + (NUMERATOR/DENOMINATOR)(b - a))\n"
         "# INDEX line_plane A B P Q R : X Y Z   (line AB meets plane PQR)\n"
         "# defining doubles as C99 hex floats (exact); X Y Z the exact rational coordinates\n" +

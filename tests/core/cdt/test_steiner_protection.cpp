@@ -139,8 +139,20 @@ TEST(SteinerProtection, ExactSideFileValidatesTheExactMesh) {
     EXPECT_TRUE(validate_cdt(read, domain.tets, CdtDomain::kCarved).ok());
 }
 
+/// Implicit points are rounded to the nearest doubles (what the .node file and the .exact file's
+/// header promise): a tenth of the way along (0,0,0)-(1,1,1) is 0.1, above 1/10, where
+/// truncation would give the double below.
+TEST(SteinerProtection, ImplicitPointsRoundToNearest) {
+    const auto m = predicates::segment_parameter_point({0, 0, 0}, {1, 1, 1}, 1, 10);
+    ASSERT_TRUE(m);
+    const Point3 r = rounded_point(*m);
+    EXPECT_EQ(r.x, 0.1);
+    EXPECT_EQ(r.z, 0.1);
+    EXPECT_GT(Rational(r.x), Rational(1, 10));
+}
+
 /// An implicit point whose rounding is an input point is still its own vertex: the midpoint of
-/// (1,1,1) and its neighbour one ulp up truncates to (1,1,1).
+/// (1,1,1) and its neighbour one ulp up, a tie, rounds to even, (1,1,1).
 TEST(SteinerProtection, RoundingOntoAnInputPointIsNoDuplicate) {
     const double up = 1 + 0x1p-52;
     PointSet points;

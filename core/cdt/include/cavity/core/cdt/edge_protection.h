@@ -80,7 +80,7 @@ std::optional<Point3> protection_point(
 /// implicit point (predicates::SegmentParameterPoint, exactly on the segment) of the edge between
 /// doubles it was first made on, at a dyadic parameter n / 2^j whose numerator and denominator are
 /// doubles exactly. plc.points.exact then holds every point's definition and plc.points.points
-/// their rounding toward zero. The k-th point made has index and perturbation key n + k (sos.h),
+/// their rounding to nearest. The k-th point made has index and perturbation key n + k (sos.h),
 /// in a deterministic order.
 /// \throws Error naming the points or edges when the PLC is invalid as above, after `max_points`
 /// insertions, or when a piece would need a parameter finer than 2^-53.

@@ -5,7 +5,7 @@
 #include "cavity/core/input/point_set.h"
 
 /// PREFIX.exact, the side file of `cavity cdt` when edge protection made implicit Steiner points
-/// (generic_point.h): the .node file holds their coordinates rounded toward zero, this file their
+/// (generic_point.h): the .node file holds their coordinates rounded to nearest, this file their
 /// exact definitions and exact rational coordinates, so that `cavity check --poly --exact`
 /// validates the exact mesh. One line per implicit point:
 ///   INDEX segment AX AY AZ BX BY BZ NUMERATOR DENOMINATOR : X Y Z
