@@ -1,6 +1,6 @@
 // cavity against CGAL's Delaunay_triangulation_3 (Epick, range insertion with its spatial sort)
-// on the same points in the same process, cavity's parallel construction (--threads T) beside its
-// sequential engine, and the optional engines of peer_engines.h (HXT) when the build has them.
+// on the same points in the same process, cavity's parallel construction (--threads T) and its
+// instrumented (counting) engine beside its sequential engine, and the optional engines of peer_engines.h (HXT) when the build has them.
 // The points are generated (--dist, --n) or read from a file (--points: .node, .xyz, .ply, as
 // `cavity triangulate` reads them). Prints one CSV row per (input, n, engine, run): the CPU and
 // wall seconds for order + triangulation, the tetrahedra, and peak memory when one engine runs
@@ -62,14 +62,16 @@ Run since(const Stamp& start, std::size_t tets) {
 
 /// threads 0: the sequential engine; else the parallel construction on that many threads. The
 /// engine borrows the points, as the CLI lets it (they are back, unchanged, when it returns), and
-/// keeps the sequence: the peak holds one copy of each.
-Run run_cavity(cavity::core::PointSet& points, unsigned threads) {
+/// keeps the sequence: the peak holds one copy of each. `count`: the instrumented engine that
+/// `--stats` and the experiments run (stage, walk and tetrahedron counters; no conflict counting).
+Run run_cavity(cavity::core::PointSet& points, unsigned threads, bool count = false) {
     const Stamp start;
     cavity::core::OrderOptions order;  // the defaults: BRIO, ratio 1/8, Hilbert within rounds
     order.threads = std::max(1u, threads);
     auto sequence = cavity::core::make_insertion_order(points.points, order).sequence;
     cavity::core::TriangulateOptions options;
     options.threads = threads;
+    options.count = count;
     const auto tri = cavity::core::triangulate_in_place(points, std::move(sequence), options);
     return since(start, tri.tets.size());
 }
@@ -127,7 +129,7 @@ int main(int argc, char** argv) {
                                       : cavity::core::read_points(points_file, false);
     const std::string input = points_file.empty() ? distribution : points_file;
     const std::vector<peers::PeerEngine> optional = peers::optional_engines(threads);
-    std::vector<std::string> engines{"cavity", "cgal", "cavity-threads"};
+    std::vector<std::string> engines{"cavity", "cgal", "cavity-threads", "cavity-counting"};
     for (const auto& e : optional) {
         engines.push_back(e.name);
     }
@@ -147,6 +149,8 @@ int main(int argc, char** argv) {
                 run = run_cavity(points, 0);
             } else if (engine == "cavity-threads") {
                 run = run_cavity(points, threads);
+            } else if (engine == "cavity-counting") {
+                run = run_cavity(points, 0, true);
             } else {
                 const auto& peer = *std::find_if(optional.begin(),
                                                  optional.end(),
