@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # cavity against CGAL's Delaunay_triangulation_3 (Epick) and, when its source is given, HXT; and
 # cavity's parallel construction and its instrumented (counting) engine against its sequential
-# engine: time in the same process, and
-# whole-process peak memory of each engine run alone. Writes results/peers/peers.csv,
-# results/peers/README.md and the peers item of the top README.
+# engine: time in the same process, and whole-process peak memory of each engine run alone.
+# Writes results/peers/peers.csv, results/peers/README.md and the peers item of the top README.
 #   bench/run_peers_bench.sh [N]           generated cube, grid and sphere of N points (default
 #                                          1000000; the grid is round(cbrt N)^3)
 #   bench/run_peers_bench.sh FILE...       the given point files (.node, .xyz, .ply), e.g. held out
