@@ -1,10 +1,10 @@
 // cavity against CGAL's Delaunay_triangulation_3 (Epick, range insertion with its spatial sort)
 // on the same points in the same process, cavity's parallel construction (--threads T) and its
-// instrumented (counting) engine beside its sequential engine, and the optional engines of peer_engines.h (HXT) when the build has them.
-// The points are generated (--dist, --n) or read from a file (--points: .node, .xyz, .ply, as
-// `cavity triangulate` reads them). Prints one CSV row per (input, n, engine, run): the CPU and
-// wall seconds for order + triangulation, the tetrahedra, and peak memory when one engine runs
-// alone (--only). The ratios are made by bench/peers_report.py.
+// instrumented (counting) engine beside its sequential engine, and the optional engines of
+// peer_engines.h (HXT) when the build has them. The points are generated (--dist, --n) or read from
+// a file (--points: .node, .xyz, .ply, as `cavity triangulate` reads them). Prints one CSV row per
+// (input, n, engine, run): the CPU and wall seconds for order + triangulation, the tetrahedra, and
+// peak memory when one engine runs alone (--only). The ratios are made by bench/peers_report.py.
 
 #include <algorithm>
 #include <cstdio>

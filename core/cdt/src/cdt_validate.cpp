@@ -189,26 +189,6 @@ private:
     std::vector<std::uint32_t> corners_;
 };
 
-/// The PLC's points in rationals, each converted on first use and kept: a point is a corner of
-/// several triangles of several facets, and converting an implicit point costs some ten thousand
-/// instructions of GMP.
-class RationalPoints {
-public:
-    explicit RationalPoints(const PointSet& points) : points_(points), made_(points.size()) {}
-
-    const ExactPoint& operator[](std::uint32_t i) {
-        std::optional<ExactPoint>& p = made_[i];
-        if (!p) {
-            p.emplace(exact_point(points_, i));
-        }
-        return *p;
-    }
-
-private:
-    const PointSet& points_;
-    std::vector<std::optional<ExactPoint>> made_;
-};
-
 /// True when mesh triangle g lies in the facet's plane with its centroid in the facet's region.
 bool in_facet(const FacetRegion& region,
               const FacetSide& side,

@@ -43,6 +43,26 @@ inline ExactPoint exact_point(const PointSet& points, std::uint32_t i) {
     return points.exact.empty() ? exact_point(points.points[i]) : exact_point(points.exact[i]);
 }
 
+/// A point set's points in rationals, each converted on first use and kept: a point is a corner of
+/// several triangles and an end of several edges near several facets, and converting an implicit
+/// point costs some ten thousand instructions of GMP.
+class RationalPoints {
+public:
+    explicit RationalPoints(const PointSet& points) : points_(points), made_(points.size()) {}
+
+    const ExactPoint& operator[](std::uint32_t i) {
+        std::optional<ExactPoint>& p = made_[i];
+        if (!p) {
+            p.emplace(exact_point(points_, i));
+        }
+        return *p;
+    }
+
+private:
+    const PointSet& points_;
+    std::vector<std::optional<ExactPoint>> made_;
+};
+
 /// Vector arithmetic on exact points.
 inline ExactPoint minus(const ExactPoint& p, const ExactPoint& q) {
     return {p[0] - q[0], p[1] - q[1], p[2] - q[2]};

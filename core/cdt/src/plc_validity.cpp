@@ -255,6 +255,7 @@ std::vector<std::string> plc_violations(
     }
     BoxGrid grid(bounds, edge_boxes);
     const auto& pts = plc.points.points;
+    RationalPoints rational(plc.points);
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
         const PlcFacet& facet = plc.facets[f];
         FacetReport report(plc, f, out);
@@ -320,8 +321,8 @@ std::vector<std::string> plc_violations(
                 if (g == e.owners.end()) {
                     continue;
                 }
-                const ExactPoint a = exact_point(p);
-                const ExactPoint b = exact_point(q);
+                const ExactPoint& a = rational[e.edge[0]];
+                const ExactPoint& b = rational[e.edge[1]];
                 const ExactPoint mid{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
                 if (region.contains(mid)) {
                     report.add(edge_name(plc, e.edge) + ", a side of " + facet_name(plc, *g) +
