@@ -26,6 +26,7 @@ struct CdtArgs {
     std::string prefix;
     std::string insert;
     bool protect = false;
+    std::size_t max_protection_points = core::CdtOptions{}.max_protection_points;
     bool convex_hull = false;
     bool all_or_nothing = false;
     bool quiet = false;
@@ -123,7 +124,7 @@ void run_cdt(const CdtArgs& args) {
                      args.input.c_str(),
                      warped);
     }
-    core::LiveCdt live(std::move(plc), core::CdtOptions{args.protect});
+    core::LiveCdt live(std::move(plc), core::CdtOptions{args.protect, args.max_protection_points});
     if (!args.insert.empty()) {
         insert_points(live, args);
     }
@@ -256,6 +257,13 @@ void add_cdt_command(CLI::App& app) {
         "parameter of the input edge (kept exactly: "
         "PREFIX.exact; .node has it rounded, and the summary counts tetrahedra the rounding "
         "inverts)");
+    cmd->add_option("--max-protection-points",
+                    args->max_protection_points,
+                    "with --protect: refuse the PLC (exit status 1, nothing written) when it is "
+                    "still not edge-protected after this many points; a guard against a cascade "
+                    "of splits between close, acutely meeting features")
+        ->capture_default_str()
+        ->check(CLI::Range(std::size_t{0}, std::size_t{2147483647}));
     cmd->add_flag("--convex-hull",
                   args->convex_hull,
                   "keep the whole convex hull of the points: neither the exterior nor the volume "

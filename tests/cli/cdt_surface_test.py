@@ -1,7 +1,8 @@
 """`cavity cdt` on surface meshes end to end: the L-shaped prism (a non-convex solid of volume 3) as
 OFF, OBJ, ASCII and binary STL, ASCII and binary PLY and TetGen .smesh meshes and carves to exactly that volume,
 and `cavity check --poly` validates the result; surfaces that bound no solid and malformed files
-are refused with exit status 1, their facets or lines named, and nothing written."""
+are refused with exit status 1, their facets or lines named, and nothing written. A polygon face off
+its plane is cut into triangles; --max-protection-points bounds edge protection."""
 
 import os
 import struct
@@ -90,18 +91,18 @@ def exact_volume(prefix):
     return total
 
 
-def cdt(name, content):
+def cdt(name, content, *options):
     mode = "wb" if isinstance(content, bytes) else "w"
     with open(name, mode) as f:
         f.write(content)
     prefix = "out_" + name.replace(".", "_")
-    r = subprocess.run([cavity, "cdt", name, "--protect", "-o", prefix], capture_output=True,
-                       text=True)
+    r = subprocess.run([cavity, "cdt", name, "--protect", "-o", prefix, *options],
+                       capture_output=True, text=True)
     return r, prefix
 
 
-def expect_refused(name, content, *fragments):
-    r, prefix = cdt(name, content)
+def expect_refused(name, content, *fragments, options=()):
+    r, prefix = cdt(name, content, *options)
     assert r.returncode == 1, (name, r.returncode, r.stderr)
     for fragment in fragments:
         assert fragment in r.stderr, (name, fragment, r.stderr)
@@ -149,4 +150,30 @@ with tempfile.TemporaryDirectory() as work:
                    "vertex index 12 is not a point")
     expect_refused("short.stl", stl_binary(POINTS, FACES)[:-1], "short.stl: ",
                    "20 triangles has 1084 bytes, this one has 1083")
+
+    # The L's top as one hexagon with corner 8 lifted 2^-30 off its plane, as rounded CAD polygons
+    # are: cut into triangles with a note, meshed, and valid.
+    lifted = [(x, y, z + 2.0**-30) if i == 8 else (x, y, z) for i, (x, y, z) in enumerate(POINTS)]
+    hexagon = off(lifted, FACES[:4] + FACES[8:]).replace("12 16 0", "12 17 0")
+    hexagon += "6 6 7 8 9 10 11\n"
+    r, prefix = cdt("warped.off", hexagon)
+    assert r.returncode == 0, r.stderr
+    assert "1 polygon faces whose corners are not coplanar were cut into triangles" in r.stderr, \
+        r.stderr
+    assert 3 < exact_volume(prefix) < 3 + 2.0**-28, exact_volume(prefix)
+    check = subprocess.run([cavity, "check", prefix + ".node", prefix + ".ele", "--poly",
+                            prefix + ".poly"], capture_output=True, text=True)
+    assert check.returncode == 0, (check.stdout, check.stderr)
+
+    # --max-protection-points: a triangle whose side 8-9 needs one split, in a box; refused when
+    # no split is allowed, meshed by default.
+    box = ["12 3 0 0"] + [f"{i} {4 * (i % 4 in (1, 2))} {4 * (i % 4 in (2, 3))} {4 * (i >= 4)}"
+                          for i in range(8)]
+    box += ["8 0.5 0.5 1", "9 3.5 1 2", "10 1 3.5 3", "11 2 0.8125 1.4375",
+            "1 0", "1 0", "3 8 9 10", "0", "0"]
+    poly = "\n".join(box) + "\n"
+    expect_refused("split.poly", poly, "still not edge-protected after inserting 0 points (edge 8-9)",
+                   options=("--convex-hull", "--max-protection-points", "0"))
+    r, prefix = cdt("split.poly", poly, "--convex-hull")
+    assert r.returncode == 0 and "(1 inserted for protection)" in r.stdout, (r.stdout, r.stderr)
 print("cdt surface inputs: ok")
