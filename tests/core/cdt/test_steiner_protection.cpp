@@ -229,6 +229,33 @@ TEST(SteinerProtection, AcuteFansEndAndValidate) {
     }
 }
 
+/// The encroached tetrahedron with its box and, far off, a copy of both at a tenth of the size:
+/// two missing edges, the long one first in index order.
+TEST(SteinerProtection, SplitsTheShortestMissingPieceFirst) {
+    const Plc one = encroached_tetrahedron();
+    std::vector<Point3> pts = one.points.points;
+    const auto n = static_cast<std::uint32_t>(pts.size());
+    for (std::uint32_t i = 0; i < n; ++i) {
+        pts.push_back({100 + pts[i].x / 10, pts[i].y / 10, pts[i].z / 10});
+    }
+    std::vector<test::Loops> facets;
+    for (const std::uint32_t o : {0u, n}) {
+        facets.push_back({{o, o + 2, o + 1}});
+        facets.push_back({{o, o + 1, o + 3}});
+        facets.push_back({{o + 1, o + 2, o + 3}});
+        facets.push_back({{o, o + 3, o + 2}});
+    }
+    Plc plc = test::make_plc(pts, facets);
+    const auto missing = unprotected_edges(plc);
+    ASSERT_NE(std::find(missing.begin(), missing.end(), Edge{0, 1}), missing.end());
+    ASSERT_NE(std::find(missing.begin(), missing.end(), Edge{n, n + 1}), missing.end());
+    const Protection protection = protect_edges(plc, 1000);
+    ASSERT_FALSE(protection.inserted.empty());
+    // First in, first out would split 0-1 first, at x near 4.9.
+    EXPECT_GT(plc.points.points[protection.inserted.front()].x, 100);
+    EXPECT_TRUE(unprotected_edges(plc).empty());
+}
+
 /// The split frees the piece of the vertex that aims it: a split anywhere in its window leaves
 /// the reference outside both pieces' diametral balls, and of those splits it takes the one
 /// nearest the midpoint, not the projection (which makes the new vertex as near the reference

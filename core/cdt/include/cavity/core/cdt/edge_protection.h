@@ -70,10 +70,10 @@ std::optional<Point3> protection_point(
 /// Before the first split it checks that no point lies inside an unprotected edge and no PLC edge
 /// crosses one (edge_violations), since splitting would never protect those.
 /// It builds the Delaunay triangulation once and inserts each point into it (Si & Shewchuk's
-/// incremental segment recovery, as TetGen does it): a first-in first-out queue, from the sorted
-/// missing edges, whose next edge is skipped when it has become a Delaunay edge and else split,
-/// its two pieces queued; when the queue runs empty every piece is checked again (a later point
-/// can take an edge away). Where it splits is split_point.h's rule: where the vertex that
+/// incremental segment recovery, as TetGen does it): a queue of the missing edges, shortest
+/// first, whose next edge is skipped when it has become a Delaunay edge and else split, its two
+/// pieces queued; when the queue runs empty every piece is checked again (a later point can take
+/// an edge away). Where it splits is split_point.h's rule: where the vertex that
 /// encroaches most stops encroaching, nearest the midpoint, when that vertex is a split point,
 /// else at the midpoint; at a point with double coordinates
 /// (protection_point) when the piece's ends are doubles and one lies near the aim, else at an
