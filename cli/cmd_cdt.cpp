@@ -250,11 +250,12 @@ void add_cdt_command(CLI::App& app) {
     cmd->add_flag(
         "--protect",
         args->protect,
-        "split PLC edges that are not Delaunay until it is edge-protected, inserting each point "
-        "into one live Delaunay triangulation, at points lying exactly on them: aimed at the "
-        "projection of the vertex that encroaches most (else the middle), a point with double "
-        "coordinates near the aim when one exists, else an implicit point at an exact dyadic "
-        "parameter of the input edge (kept exactly: "
+        "split PLC edges that are not Delaunay until it is edge-protected, the shortest missing "
+        "piece first, inserting each point into one live Delaunay triangulation, at points lying "
+        "exactly on them: aimed at the middle (or, when an earlier split point encroaches, at the "
+        "point nearest the middle that frees the piece of it), a point with double coordinates "
+        "near the aim when one exists, else an implicit point at an exact dyadic parameter of "
+        "the input edge (kept exactly: "
         "PREFIX.exact; .node has it rounded, and the summary counts tetrahedra the rounding "
         "inverts)");
     cmd->add_option("--max-protection-points",
