@@ -11,6 +11,7 @@
 
 #include "cavity/core/mesh/array_storage.h"
 #include "cavity/core/mesh/tetrahedron.h"
+#include "page_advice.h"
 
 namespace cavity::core {
 
@@ -137,6 +138,14 @@ public:
     /// Whether slot t holds a tetrahedron: exact for a slot the caller owns, or when no thread
     /// runs. (A successful try_lock needs no such check: it takes live slots only.)
     bool alive(TetId t) { return owner(t) != kDead; }
+
+    /// Returns the memory of slots [begin, end)'s records to the system, for a thread that has
+    /// read its share of the slots for the last time: the threads then share what clear(), on
+    /// one thread, would otherwise release alone (about 9 ms of unmapping at 10^6 points). The
+    /// records are not read again; clear() follows.
+    void release_records(std::size_t begin, std::size_t end) {
+        release_pages(records_.get() + begin, (end - begin) * sizeof(ArrayRecord));
+    }
 
     /// Frees the memory. No thread may run.
     void clear() {
