@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <thread>
+
+#include "cavity/core/base/on_threads.h"
 
 namespace cavity::core {
 
@@ -29,16 +30,6 @@ std::vector<std::uint32_t> empty_table(std::size_t points) {
         size *= 2;
     }
     return std::vector<std::uint32_t>(size, kEmpty);
-}
-
-/// Runs body(k) for k in [0, count), k = 0 on the calling thread.
-template <class Body>
-void on_threads(unsigned count, const Body& body) {
-    std::vector<std::jthread> helpers;
-    for (unsigned k = 1; k < count; ++k) {
-        helpers.emplace_back(body, k);
-    }
-    body(0);
 }
 
 }  // namespace

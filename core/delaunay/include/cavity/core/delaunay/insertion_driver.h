@@ -48,10 +48,11 @@ Prepared prepare(const PointSet& input,
                  Triangulation& out,
                  unsigned threads = 1);
 
-/// prepare() on points the caller lends and a sequence it gives up: the geometry takes over
-/// `input.points`' array, laid out in insertion order in place, and makes its keys in `sequence`'s
-/// array, so neither is copied (28 bytes per point less while the engine runs). Checks and throws
-/// as prepare() does, before anything moves; afterwards `input.points` is empty until give_back.
+/// prepare() on points the caller lends and a sequence it gives up: the points move to the
+/// geometry in insertion order (gathered by up to `threads` threads into a new array, the lent one
+/// freed at once) and its keys are made in `sequence`'s array, so neither is held twice while the
+/// engine runs (28 bytes per point less). Checks and throws as prepare() does, before anything
+/// moves; afterwards `input.points` is empty until give_back.
 Prepared prepare_in_place(PointSet& input,
                           std::vector<std::uint32_t>&& sequence,
                           BootstrapRule rule,
