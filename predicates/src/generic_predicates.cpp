@@ -71,8 +71,11 @@ Integer scaled(double x, int scale) {
         return Integer(0);
     }
     const int k = spacing_exponent(x);
-    const Integer mantissa(static_cast<long long>(std::ldexp(x, -k)));  // |mantissa| < 2^53
-    return mantissa << static_cast<unsigned>(k - scale);
+    // Shifted in place: `mantissa << shift` made a second integer, and copying and freeing it
+    // was a fifth of this function's cost in the exact stage of a protected CDT.
+    Integer result(static_cast<long long>(std::ldexp(x, -k)));  // |mantissa| < 2^53
+    result <<= static_cast<unsigned>(k - scale);
+    return result;
 }
 
 /// Calls f on every coordinate of every point defining g.
