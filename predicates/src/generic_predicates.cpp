@@ -5,10 +5,13 @@
 #include <climits>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <utility>
 #include <variant>
 
 #include <boost/multiprecision/gmp.hpp>
 
+#include "cavity/predicates/generic_filter.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"
 #include "homogeneous.h"
@@ -26,9 +29,13 @@
 // multiplying row p by W_p^2 > 0 turns (x, y, z, |p|^2, 1) into (XW, YW, ZW, X^2+Y^2+Z^2, W^2):
 // the same sign, whatever the signs of the W.
 //
-// The filter evaluates these in interval arithmetic (interval.h, sound for every finite input,
-// overflow and underflow included) on the query translated to one of its defining points, and
-// answers when the determinant's interval and those of the W exclude zero. The exact stage
+// The filter computes the homogeneous coordinates in interval arithmetic (interval.h, sound for
+// every finite input, overflow and underflow included) on the query translated to one of its
+// defining points. From them it first takes each point's rounded Cartesian coordinates and a
+// bound on their distance to the exact ones, and tries the floating-point stage of
+// generic_filter.h: a 4x4 or 3x3 determinant in doubles, several times cheaper than the
+// determinants of intervals. When that cannot decide, it answers when the homogeneous
+// determinant's interval and those of the W exclude zero. The exact stage
 // evaluates the same formulas over GMP integers after scaling the defining doubles to integers
 // (homogeneous.h says why that keeps the signs).
 namespace cavity::predicates {
@@ -49,6 +56,10 @@ int sign_of(const Integer& x) {
     return x.sign();
 }
 
+Interval identity_interval(double x) {
+    return Interval(x);
+}
+
 /// The exponent k of the spacing of x's binade: x is an integer multiple of 2^k (x finite).
 int spacing_exponent(double x) {
     return std::max(std::ilogb(x), -1022) - 52;
@@ -60,8 +71,11 @@ Integer scaled(double x, int scale) {
         return Integer(0);
     }
     const int k = spacing_exponent(x);
-    const Integer mantissa(static_cast<long long>(std::ldexp(x, -k)));  // |mantissa| < 2^53
-    return mantissa << static_cast<unsigned>(k - scale);
+    // Shifted in place: `mantissa << shift` made a second integer, and copying and freeing it
+    // was a fifth of this function's cost in the exact stage of a protected CDT.
+    Integer result(static_cast<long long>(std::ldexp(x, -k)));  // |mantissa| < 2^53
+    result <<= static_cast<unsigned>(k - scale);
+    return result;
 }
 
 /// Calls f on every coordinate of every point defining g.
@@ -107,10 +121,9 @@ std::array<Homogeneous<Interval>, N> interval_rows(const std::array<const Generi
                                        Interval(p.y) - Interval(o.y),
                                        Interval(p.z) - Interval(o.z)};
     };
-    const auto identity = [](double x) { return Interval(x); };
     std::array<Homogeneous<Interval>, N> rows;
     for (std::size_t i = 0; i < N; ++i) {
-        rows[i] = detail::homogeneous<Interval>(*g[i], lift, identity);
+        rows[i] = detail::homogeneous<Interval>(*g[i], lift, identity_interval);
     }
     return rows;
 }
@@ -190,6 +203,53 @@ bool is_finite(const Point3& p) {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
 
+/// An upper bound on max |x - r| over the coordinates of the point x whose homogeneous
+/// coordinates h encloses, +inf when r is not finite or h's W interval holds zero.
+double distance_bound(const Homogeneous<Interval>& h, const Point3& r) {
+    constexpr double kUnknown = std::numeric_limits<double>::infinity();
+    if (!is_finite(r)) {
+        return kUnknown;
+    }
+    // x - r = (X - r W) / W: bound |X - r W| from above and |W| from below.
+    double w_min = 0.0;
+    if (h.w.lo() > 0.0) {
+        w_min = h.w.lo();
+    } else if (h.w.hi() < 0.0) {
+        w_min = -h.w.hi();
+    } else {
+        return kUnknown;
+    }
+    double numerator = 0.0;
+    for (const auto& [coordinate, rounded] :
+         {std::pair{h.x, r.x}, std::pair{h.y, r.y}, std::pair{h.z, r.z}}) {
+        const Interval distance = coordinate - Interval(rounded) * h.w;
+        numerator = std::max({numerator, -distance.lo(), distance.hi()});
+    }
+    // q = fl(numerator / w_min) is within a spacing of the true quotient, so q plus interval.h's
+    // widening of q, rounded to nearest, is at least the next double up, hence above it; both
+    // ends are bounds already (an endpoint's magnitude), so the result bounds max |x - r|.
+    const double q = numerator / w_min;
+    return q + (q * 0x1p-52 + 0x1p-1074);
+}
+
+double midpoint(const Interval& x) {
+    return 0.5 * x.lo() + 0.5 * x.hi();
+}
+
+/// The floating-point stage's view of the filter's rows (translated like them, which keeps the
+/// signs): each point at the ratio of its intervals' midpoints, with the bound on its distance.
+template <std::size_t N>
+std::array<RoundedPoint, N> rounded_rows(const std::array<Homogeneous<Interval>, N>& rows) {
+    std::array<RoundedPoint, N> rounded;
+    for (std::size_t i = 0; i < N; ++i) {
+        const Homogeneous<Interval>& h = rows[i];
+        const double w = midpoint(h.w);
+        const Point3 r{midpoint(h.x) / w, midpoint(h.y) / w, midpoint(h.z) / w};
+        rounded[i] = {r, distance_bound(h, r)};
+    }
+    return rounded;
+}
+
 }  // namespace
 
 Verdict orient3d_staged(const GenericPoint3& a,
@@ -201,7 +261,12 @@ Verdict orient3d_staged(const GenericPoint3& a,
         return orient3d_staged(
             std::get<Point3>(a), std::get<Point3>(b), std::get<Point3>(c), std::get<Point3>(d));
     }
-    if (const int s = orient3d_sign(interval_rows(g))) {
+    const auto rows = interval_rows(g);
+    const auto r = rounded_rows(rows);
+    if (const int s = orient3d_rounded(r[0], r[1], r[2], r[3])) {
+        return {static_cast<Sign>(s), Stage::kFilter};
+    }
+    if (const int s = orient3d_sign(rows)) {
         return {static_cast<Sign>(s), Stage::kFilter};
     }
     return {static_cast<Sign>(orient3d_sign(exact_rows(g))), Stage::kExact};
@@ -220,10 +285,27 @@ Verdict insphere_staged(const GenericPoint3& a,
                                std::get<Point3>(d),
                                std::get<Point3>(e));
     }
-    if (const int s = insphere_sign(interval_rows(g))) {
+    const auto rows = interval_rows(g);
+    const auto r = rounded_rows(rows);
+    if (const int s = insphere_rounded(r[0], r[1], r[2], r[3], r[4])) {
+        return {static_cast<Sign>(s), Stage::kFilter};
+    }
+    if (const int s = insphere_sign(rows)) {
         return {static_cast<Sign>(s), Stage::kFilter};
     }
     return {static_cast<Sign>(insphere_sign(exact_rows(g))), Stage::kExact};
+}
+
+double rounding_error(const GenericPoint3& g, const Point3& r) {
+    if (const auto* p = std::get_if<Point3>(&g);
+        p != nullptr && p->x == r.x && p->y == r.y && p->z == r.z) {
+        return 0.0;
+    }
+    // Untranslated intervals: r is in absolute coordinates.
+    const auto lift = [](const Point3& p) {
+        return std::array<Interval, 3>{Interval(p.x), Interval(p.y), Interval(p.z)};
+    };
+    return distance_bound(detail::homogeneous<Interval>(g, lift, identity_interval), r);
 }
 
 std::optional<LinePlanePoint> line_plane_point(

@@ -10,6 +10,7 @@
 
 #include "cavity/predicates/generic_predicates.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -23,6 +24,7 @@
 #include <boost/multiprecision/gmp.hpp>
 #include <gtest/gtest.h>
 
+#include "cavity/predicates/generic_filter.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"
 #include "random_source.h"
@@ -425,6 +427,205 @@ TEST(GenericPredicates, AgreeWithTheExplicitPredicatesOnDoublePoints) {
         EXPECT_EQ(orient3d(c, d, e, mid), orient3d(c, d, e, mid_doubles));
         EXPECT_EQ(insphere(c, d, mid, e, GenericPoint3(f)), insphere(c, d, mid_doubles, e, f));
     }
+}
+
+/// A line-plane point whose line is nearly parallel to its plane (the direction leaves the plane
+/// by about 2^-tilt of its length): W is tiny against its terms, so the rounded point is the
+/// least accurate the construction makes.
+GenericPoint3 grazing_line_plane_point(Source& s, int lo, int hi, int tilt) {
+    for (;;) {
+        const Point3 p = s.point(lo, hi), q = s.point(lo, hi), r = s.point(lo, hi);
+        const Point3 a = s.point(lo, hi);
+        const double k = s.unit(), j = s.unit(), eps = std::ldexp(s.unit(), -tilt);
+        // a + k (q - p) + j (r - p) stays in the plane's direction; eps (a - p) leaves it.
+        const Point3 b{a.x + k * (q.x - p.x) + j * (r.x - p.x) + eps * (a.x - p.x),
+                       a.y + k * (q.y - p.y) + j * (r.y - p.y) + eps * (a.y - p.y),
+                       a.z + k * (q.z - p.z) + j * (r.z - p.z) + eps * (a.z - p.z)};
+        if (auto l = line_plane_point(a, b, p, q, r)) {
+            return *l;
+        }
+    }
+}
+
+/// The doubles nearest to g's coordinates (as Boost converts), moved by up to three ulps each
+/// half of the time: the rounded point a caller may hold.
+Point3 rounded_near(Source& s, const GenericPoint3& g) {
+    const Exact x = cartesian(g);
+    Point3 r{x[0].convert_to<double>(), x[1].convert_to<double>(), x[2].convert_to<double>()};
+    if (s.integer(0, 1) == 0) {
+        for (double* v : {&r.x, &r.y, &r.z}) {
+            for (int k = s.integer(0, 3); k > 0; --k) {
+                *v = s.nudged(*v);
+            }
+        }
+    }
+    return r;
+}
+
+/// The floating-point stage (generic_filter.h) against the oracle: when it answers, the oracle
+/// agrees, and rounding_error bounds the distance from each point to its doubles.
+struct RoundedTally {
+    std::size_t mismatches = 0;
+    std::size_t decided = 0;
+    std::size_t queries = 0;
+    std::size_t loose_bounds = 0;  // rounding_error below the true distance: must stay 0
+
+    RoundedPoint rounded(Source& s, const GenericPoint3& g) {
+        const Point3 r = rounded_near(s, g);
+        const double error = rounding_error(g, r);
+        if (std::isfinite(error)) {
+            const Exact x = cartesian(g);
+            const Rational bound(error);
+            for (std::size_t i = 0; i < 3; ++i) {
+                const Rational distance = abs(x[i] - Rational(std::array{r.x, r.y, r.z}[i]));
+                if (distance > bound && ++loose_bounds <= 3) {
+                    ADD_FAILURE() << "rounding_error " << hex(error) << " below the distance of "
+                                  << describe(g) << " to " << describe(r);
+                }
+            }
+        }
+        return {r, error};
+    }
+
+    void check(int sign, Sign expected, const std::array<GenericPoint3, 5>& g, std::size_t n) {
+        ++queries;
+        if (sign == 0) {
+            return;
+        }
+        ++decided;
+        if (sign != to_int(expected) && ++mismatches <= 3) {
+            std::string text;
+            for (std::size_t i = 0; i < n; ++i) {
+                text += describe(g[i]) + "\n";
+            }
+            ADD_FAILURE() << "rounded stage " << sign << ", oracle " << to_int(expected) << "\n"
+                          << text;
+        }
+    }
+
+    void run(Source& s, const std::array<GenericPoint3, 5>& g) {
+        std::array<RoundedPoint, 5> r;
+        for (std::size_t i = 0; i < 5; ++i) {
+            r[i] = rounded(s, g[i]);
+        }
+        check(orient3d_rounded(r[0], r[1], r[2], r[3]), oracle_orient3d(g), g, 4);
+        check(insphere_rounded(r[0], r[1], r[2], r[3], r[4]), oracle_insphere(g), g, 5);
+    }
+};
+
+TEST(GenericPredicates, RoundedStageAgreesWithTheOracleOnRandomMixes) {
+    Source s(25);
+    RoundedTally tally;
+    for (const Range r : {Range{-1074, -1000},
+                          Range{-160, -140},
+                          Range{-2, 2},
+                          Range{140, 160},
+                          Range{900, 1023},
+                          Range{-1074, 1023},
+                          Range{-40, 40}}) {
+        const std::size_t count = r.hi - r.lo > 1000 ? queries() / 8 : queries();
+        for (std::size_t n = 0; n < count; ++n) {
+            std::array<GenericPoint3, 5> g;
+            for (auto& p : g) {
+                const int kind = s.integer(0, 3);
+                p = kind == 3 ? grazing_line_plane_point(s, r.lo, r.hi, s.integer(10, 60))
+                              : random_generic(s, kind, r.lo, r.hi);
+            }
+            tally.run(s, g);
+        }
+    }
+    EXPECT_EQ(tally.mismatches, 0u);
+    EXPECT_EQ(tally.loose_bounds, 0u);
+}
+
+/// General position, near the origin and offset by about 10^6, with line-plane points on lines
+/// from steep to grazing: the stage must decide most of these queries on its own, and never
+/// wrongly.
+TEST(GenericPredicates, RoundedStageDecidesGeneralPositionQueries) {
+    Source s(26);
+    for (const double offset : {0.0, 1048576.0 + 0.375}) {
+        RoundedTally tally;
+        RoundedTally grazing;
+        const auto moved = [&](const GenericPoint3& g) {
+            GenericPoint3 m = g;
+            const auto shift = [&](Point3& p) {
+                p = {offset + std::ldexp(p.x, -10),
+                     offset + std::ldexp(p.y, -10),
+                     offset + std::ldexp(p.z, -10)};
+            };
+            if (auto* p = std::get_if<Point3>(&m)) {
+                shift(*p);
+            } else if (auto* q = std::get_if<SegmentParameterPoint>(&m)) {
+                shift(q->a);
+                shift(q->b);
+            } else {
+                auto& l = std::get<LinePlanePoint>(m);
+                for (Point3* x : {&l.a, &l.b, &l.p, &l.q, &l.r}) {
+                    shift(*x);
+                }
+            }
+            return m;
+        };
+        for (std::size_t n = 0; n < queries(); ++n) {
+            std::array<GenericPoint3, 5> g;
+            for (auto& p : g) {
+                p = moved(random_generic(s, s.integer(0, 2), -2, 2));
+            }
+            tally.run(s, g);
+            // A grazing point, exactly a line-plane point of the moved definition when it is one.
+            const GenericPoint3 graze = moved(grazing_line_plane_point(s, -2, 2, s.integer(4, 40)));
+            if (const auto* l = std::get_if<LinePlanePoint>(&graze);
+                l != nullptr && line_plane_point(l->a, l->b, l->p, l->q, l->r)) {
+                g[static_cast<std::size_t>(s.integer(0, 4))] = graze;
+                grazing.run(s, g);
+            }
+        }
+        std::printf(
+            "offset %g: rounded stage decided %zu of %zu, with a grazing point %zu of %zu\n",
+            offset,
+            tally.decided,
+            tally.queries,
+            grazing.decided,
+            grazing.queries);
+        EXPECT_EQ(tally.mismatches + grazing.mismatches, 0u);
+        EXPECT_EQ(tally.loose_bounds + grazing.loose_bounds, 0u);
+        EXPECT_GT(tally.decided * 10, tally.queries * 9);
+    }
+}
+
+/// The exact and nudged degeneracies: the stage may answer only nonzero signs, and only right.
+TEST(GenericPredicates, RoundedStageAgreesWithTheOracleNearDegeneracies) {
+    Source s(27);
+    RoundedTally tally;
+    for (const int scale : {-1070, -150, -30, 0, 30, 150, 960}) {
+        for (std::size_t n = 0; n < queries() / 4; ++n) {
+            Degenerate d = degenerate(s, scale);
+            tally.run(s, d.coplanar);
+            tally.run(s, d.cospherical);
+            for (auto* g : {&d.coplanar, &d.cospherical}) {
+                Point3* p = std::get_if<Point3>(&(*g)[static_cast<std::size_t>(s.integer(0, 4))]);
+                if (p != nullptr) {
+                    p->x = s.nudged(p->x);
+                    tally.run(s, *g);
+                }
+            }
+        }
+    }
+    EXPECT_EQ(tally.mismatches, 0u);
+    EXPECT_EQ(tally.loose_bounds, 0u);
+}
+
+TEST(GenericPredicates, RoundingErrorIsZeroOnlyForTheExactDoubles) {
+    const Point3 a{1, 2, 3}, b{2, 2, 3};
+    EXPECT_EQ(rounding_error(GenericPoint3(a), a), 0.0);
+    EXPECT_GT(rounding_error(GenericPoint3(a), b), 0.0);
+    // The third of the way from a to b is not a double: a positive bound, and a small one.
+    const GenericPoint3 third = SegmentParameterPoint{a, b, 1.0, 3.0};
+    const double error = rounding_error(third, Point3{1.0 + 1.0 / 3.0, 2, 3});
+    EXPECT_GT(error, 0.0);
+    EXPECT_LT(error, 0x1p-48);
+    EXPECT_EQ(rounding_error(third, Point3{std::numeric_limits<double>::infinity(), 2, 3}),
+              std::numeric_limits<double>::infinity());
 }
 
 TEST(GenericPredicates, UndefinedPointsAreRefused) {

@@ -1,6 +1,7 @@
 #include "cavity/core/geometry/geometry.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <utility>
 
 #include "cavity/core/base/assert.h"
@@ -20,6 +21,10 @@ Geometry::Geometry(std::vector<Point3> points,
     // Implicit points are the CDT's, which is unweighted.
     CAVITY_ASSERT(exact_.empty() || (exact_.size() == points_.size() && weights_.empty()),
                   "implicit points need one definition per point and no weights");
+    errors_.reserve(exact_.size());
+    for (std::size_t i = 0; i < exact_.size(); ++i) {
+        errors_.push_back(predicates::rounding_error(exact_[i], points_[i]));
+    }
     if (points_.empty()) {
         return;
     }
@@ -50,6 +55,7 @@ VertexId Geometry::append_implicit(const GenericPoint3& exact,
     CAVITY_ASSERT(!weighted(), "implicit points are unweighted");
     if (!has_implicit()) {
         exact_.assign(points_.begin(), points_.end());
+        errors_.assign(points_.size(), 0.0);
         plain_ = false;
     }
     // Not a lattice any more, even when the rounded point is an integer point: the plain
@@ -59,6 +65,7 @@ VertexId Geometry::append_implicit(const GenericPoint3& exact,
     points_.push_back(rounded);
     widen_box(rounded);
     exact_.push_back(exact);
+    errors_.push_back(predicates::rounding_error(exact, rounded));
     keys_.push_back(key);
     return static_cast<VertexId>(points_.size() - 1);
 }
@@ -98,6 +105,10 @@ predicates::Verdict Geometry::orient3d_generic(VertexId a,
                                                VertexId b,
                                                VertexId c,
                                                VertexId d) const {
+    if (const int s =
+            predicates::orient3d_rounded(rounded(a), rounded(b), rounded(c), rounded(d))) {
+        return {s > 0 ? Sign::kPos : Sign::kNeg, predicates::Stage::kFilter};
+    }
     return predicates::orient3d_staged(exact_[a], exact_[b], exact_[c], exact_[d]);
 }
 
@@ -142,6 +153,16 @@ template <Tally T>
 bool Geometry::conflicts_solid_exactly(const TetVertices& t, VertexId u, T& tally) const {
     const perturbation::Keys5 keys{keys_[t[0]], keys_[t[1]], keys_[t[2]], keys_[t[3]], keys_[u]};
     if (has_implicit()) {
+        // A nonzero exact determinant is the perturbed one's sign: no tie-break to run.
+        if (const int s = predicates::insphere_rounded(
+                rounded(t[0]), rounded(t[1]), rounded(t[2]), rounded(t[3]), rounded(u))) {
+            count(
+                perturbation::SosVerdict{
+                    s > 0 ? Sign::kPos : Sign::kNeg, predicates::Stage::kFilter, 0},
+                PredicateKind::kInsphere,
+                tally);
+            return s > 0;
+        }
         const auto v = perturbation::insphere_sos_staged(
             exact_[t[0]], exact_[t[1]], exact_[t[2]], exact_[t[3]], exact_[u], keys);
         count(v, PredicateKind::kInsphere, tally);

@@ -9,6 +9,7 @@
 #include "cavity/core/mesh/tetrahedron.h"
 #include "cavity/perturbation/outer_halfspace.h"
 #include "cavity/perturbation/sos.h"
+#include "cavity/predicates/generic_filter.h"
 #include "cavity/predicates/generic_point.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/insphere_static_filter.h"
@@ -37,6 +38,9 @@ using predicates::WeightedPoint3;
 /// predicates, so no exact decision sees a rounded coordinate; point(v) stays the rounded point,
 /// for what needs no exactness (walks, boxes, output). Without implicit points `exact` is empty
 /// and the tests are the plain ones, behind one well-predicted branch.
+/// With implicit points each point also keeps a bound on its rounding (generic_filter.h's
+/// rounding_error, computed once on arrival), so the tests by vertex id try the floating-point
+/// stage on the rounded points first and call the generic predicates only when it cannot decide.
 ///
 /// Lattices. When every point is an integer point and the points span at most
 /// predicates::kLatticeMaxSpan along each axis (a grid: detected at construction and kept up to
@@ -88,6 +92,7 @@ public:
         widen_box(p);
         if (has_implicit()) {
             exact_.emplace_back(p);
+            errors_.push_back(0.0);
         }
         keys_.push_back(static_cast<std::uint32_t>(keys_.size()));
         return static_cast<VertexId>(points_.size() - 1);
@@ -100,6 +105,7 @@ public:
         widen_box(p);
         if (has_implicit()) {
             exact_.emplace_back(p);
+            errors_.push_back(0.0);
         }
         keys_.push_back(key);
         if (weighted()) {
@@ -287,6 +293,10 @@ private:
                                       const Point3& b,
                                       const Point3& c,
                                       const Point3& d) const;
+
+    /// Point v as the floating-point stage takes it (implicit geometries only).
+    predicates::RoundedPoint rounded(VertexId v) const { return {points_[v], errors_[v]}; }
+
     /// orient3d on the exact points (out of line: only geometries with implicit points call it).
     predicates::Verdict orient3d_generic(VertexId a, VertexId b, VertexId c, VertexId d) const;
     template <Tally T>
@@ -303,6 +313,7 @@ private:
     std::vector<std::uint32_t> keys_;
     std::vector<double> weights_;
     std::vector<GenericPoint3> exact_;  // empty, or one definition per point (see the top)
+    std::vector<double> errors_;        // with exact_: max |exact - point| per point, bounded
     bool plain_ = true;                 // unweighted and no implicit point: the inline fast path
     bool lattice_ = false;              // plain_, integer points, exact lattice box (see the top)
     Point3 box_lo_{};                   // bounding box of points_, when there are any
