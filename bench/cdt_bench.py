@@ -316,7 +316,9 @@ def run(cmd, cwd, timeout):
 
 def first_line(text, prefer=()):
     """The first line of the reason (with the preferred key), and the line after it when it ends in ':'."""
-    lines = [ln.strip() for ln in text.splitlines() if ln.strip()]
+    # cavity's notes and warnings say what it did, not why it stopped
+    lines = [ln.strip() for ln in text.splitlines()
+             if ln.strip() and not ln.startswith(("cavity: note:", "cavity: warning:"))]
     at = 0
     for key in prefer:
         hits = [k for k, ln in enumerate(lines) if key in ln]
