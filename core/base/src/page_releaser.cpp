@@ -29,7 +29,7 @@ PageReleaser::PageReleaser(unsigned char* begin) {
     // The first partial page may hold someone else's data: start at the next page boundary.
     const std::uintptr_t page = page_size();
     const auto b = reinterpret_cast<std::uintptr_t>(begin);
-    // Page arithmetic needs the address as an integer; this is the one place cavity does it.
+    // Page arithmetic needs the address as an integer: this file is where cavity does it.
     // NOLINTNEXTLINE(performance-no-int-to-ptr)
     released_ = reinterpret_cast<unsigned char*>((b + page - 1) / page * page);
 }
@@ -45,6 +45,18 @@ void PageReleaser::release_before(unsigned char* mark) {
     madvise(released_, end - start, MADV_DONTNEED);
 #endif
     released_ = reinterpret_cast<unsigned char*>(end);  // NOLINT(performance-no-int-to-ptr)
+}
+
+void fault_in_pages([[maybe_unused]] unsigned char* begin, [[maybe_unused]] unsigned char* end) {
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+    const std::uintptr_t page = page_size();
+    const auto first = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) / page * page;
+    const auto last = reinterpret_cast<std::uintptr_t>(end) / page * page;
+    if (last > first) {
+        // NOLINTNEXTLINE(performance-no-int-to-ptr)
+        madvise(reinterpret_cast<void*>(first), last - first, MADV_POPULATE_WRITE);
+    }
+#endif
 }
 
 void release_free_heap() {

@@ -4,8 +4,8 @@
 #include <span>
 
 #include "canonical_rotation.h"
+#include "cavity/core/base/page_releaser.h"
 #include "in_pieces.h"
-#include "page_advice.h"
 
 namespace cavity::core {
 
@@ -149,7 +149,8 @@ std::size_t list_canonically(ConcurrentMesh& mesh,
     // resize a memset of resident pages.
     tets.reserve(placed);
     in_pieces(placed, threads, [&](unsigned, std::size_t begin, std::size_t end) {
-        fault_in_pages(tets.data() + begin, (end - begin) * sizeof(Tet));
+        auto* bytes = reinterpret_cast<unsigned char*>(tets.data());
+        fault_in_pages(bytes + begin * sizeof(Tet), bytes + end * sizeof(Tet));
     });
     tets.resize(placed);
     in_pieces(used, threads, [&](unsigned k, std::size_t begin, std::size_t end) {

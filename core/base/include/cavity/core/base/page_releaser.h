@@ -17,6 +17,12 @@ private:
     unsigned char* released_;  // everything before this has been released
 };
 
+/// Faults in for writing, without writing them, the whole pages of [begin, end) (their content is
+/// unchanged), so that threads can share the page faults of a large buffer one thread fills or
+/// zeroes afterwards. A no-op where the system offers no such call (MADV_POPULATE_WRITE needs
+/// Linux 5.14) or refuses it: the advice is about time, never content.
+void fault_in_pages(unsigned char* begin, unsigned char* end);
+
 /// Returns the pages of the heap's free memory to the operating system. glibc keeps the pages of
 /// blocks freed below the top of its heap resident (blocks of a few MiB land there once its
 /// mmap threshold has grown), so the temporaries of one stage would otherwise stay in the
