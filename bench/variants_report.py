@@ -48,14 +48,14 @@ for d in runs:
 
 
 def readme_item():
-    """The top README's summary: the largest walk run against the 24 GiB goal, and the variants'
-    time and memory ratios at the size where all four ran."""
+    """The top README's summary: the largest walk run's peak memory and time, and the variants'
+    time and memory ratios at the size where all four ran. (The goal of 10^8 points within 24 GiB
+    is bench/run_scale_bench.sh's: these runs go through the CLI and write their meshes.)"""
     walk = [d for d in runs if d["locate"] == "walk" and d["storage"] == "array"]
     largest = max(walk, key=lambda d: d["points"])
     n = largest["points"]
     gib = largest["peak_rss_bytes"] / 2**30
-    parts = [f"{n} points triangulate in {gib:.2f} GiB peak (goal: "
-             f"within 24 GiB, {'met' if gib <= 24 else '**not met**'}), "
+    parts = [f"{n} points triangulate with `cavity triangulate` in {gib:.2f} GiB peak, "
              f"{1e6 * largest['timings']['triangulate_s'] / n:.1f} µs/point instrumented"]
     for size in sorted(ref):
         r = ref[size]
