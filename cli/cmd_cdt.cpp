@@ -28,6 +28,7 @@ struct CdtArgs {
     bool protect = false;
     std::size_t max_protection_points = core::CdtOptions{}.max_protection_points;
     bool convex_hull = false;
+    bool keep_faces = false;
     bool all_or_nothing = false;
     bool quiet = false;
 };
@@ -115,14 +116,22 @@ double volume(const std::vector<core::Point3>& pts, const std::vector<core::Tet>
 }
 
 void run_cdt(const CdtArgs& args) {
-    std::size_t warped = 0;
-    core::Plc plc = core::read_plc(args.input, &warped);
-    if (warped > 0 && !args.quiet) {
+    core::SurfaceReading reading;
+    core::Plc plc = core::read_plc(args.input, &reading, !args.keep_faces);
+    if (reading.warped_faces > 0 && !args.quiet) {
         std::fprintf(stderr,
                      "cavity: note: %s: %zu polygon faces whose corners are not coplanar were cut "
                      "into triangles\n",
                      args.input.c_str(),
-                     warped);
+                     reading.warped_faces);
+    }
+    if (reading.merged_faces > 0 && !args.quiet) {
+        std::fprintf(stderr,
+                     "cavity: note: %s: %zu exactly coplanar neighbouring faces were merged into "
+                     "%zu polygons (--keep-faces keeps each face a polygon)\n",
+                     args.input.c_str(),
+                     reading.merged_faces,
+                     reading.merged_polygons);
     }
     core::LiveCdt live(std::move(plc), core::CdtOptions{args.protect, args.max_protection_points});
     if (!args.insert.empty()) {
@@ -269,6 +278,12 @@ void add_cdt_command(CLI::App& app) {
                   args->convex_hull,
                   "keep the whole convex hull of the points: neither the exterior nor the volume "
                   "holes are removed (hole points are still checked)");
+    cmd->add_flag("--keep-faces",
+                  args->keep_faces,
+                  "a surface mesh's faces stay polygons of their own; by default each group of "
+                  "exactly coplanar faces joined by their sides is merged into one polygon (with "
+                  "holes), as TetGen does without -M: the sides inside a flat face are no "
+                  "constraints, and need no protection");
     cmd->add_option("--insert",
                     args->insert,
                     "after the polygons, insert these points (.node, .xyz, .ply) in file order "

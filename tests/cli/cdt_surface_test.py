@@ -2,7 +2,8 @@
 OFF, OBJ, ASCII and binary STL, ASCII and binary PLY and TetGen .smesh meshes and carves to exactly that volume,
 and `cavity check --poly` validates the result; surfaces that bound no solid and malformed files
 are refused with exit status 1, their facets or lines named, and nothing written. A polygon face off
-its plane is cut into triangles; --max-protection-points bounds edge protection."""
+its plane is cut into triangles; exactly coplanar neighbouring faces are merged unless --keep-faces;
+--max-protection-points bounds edge protection."""
 
 import os
 import struct
@@ -164,6 +165,18 @@ with tempfile.TemporaryDirectory() as work:
     check = subprocess.run([cavity, "check", prefix + ".node", prefix + ".ele", "--poly",
                             prefix + ".poly"], capture_output=True, text=True)
     assert check.returncode == 0, (check.stdout, check.stderr)
+
+    # The L prism's flat faces are 20 triangles: merged into its 8 polygons (the two L-shaped ends,
+    # the six rectangles) by default, with a note; --keep-faces keeps the 20.
+    for options, note, facets in (((), True, 8), (("--keep-faces",), False, 20)):
+        r, prefix = cdt("L.off", off(POINTS, FACES), *options)
+        assert r.returncode == 0, r.stderr
+        merged = "20 exactly coplanar neighbouring faces were merged into 8 polygons"
+        assert (merged in r.stderr) == note, r.stderr
+        with open(prefix + ".poly") as f:
+            rows = [line.split() for line in f if line.strip() and not line.startswith("#")]
+        assert int(rows[1 + int(rows[0][0])][0]) == facets, rows[1 + int(rows[0][0])]
+        assert exact_volume(prefix) == 3, exact_volume(prefix)
 
     # --max-protection-points: a triangle whose side 8-9 needs one split, in a box; refused when
     # no split is allowed, meshed by default.

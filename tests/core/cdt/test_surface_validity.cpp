@@ -239,10 +239,11 @@ TEST(WarpedFacets, NonCoplanarFacesAreReadAsTheirTriangles) {
     test::TempDir dir;
     // 2^-40 off the plane: a rounded quad, as CAD exports have them. Of the faces at corner 6, the
     // top (1) is warped; the right and back ones (x = 1, y = 1) stay planar, as do the others.
-    std::size_t warped = 0;
+    SurfaceReading reading;
     const Plc plc =
-        read_plc(dir.write("warped.off", warped_cube_off("1.0000000000009095", "1")), &warped);
-    EXPECT_EQ(warped, 1u);
+        read_plc(dir.write("warped.off", warped_cube_off("1.0000000000009095", "1")), &reading);
+    EXPECT_EQ(reading.warped_faces, 1u);
+    EXPECT_EQ(reading.merged_faces, 0u);
     ASSERT_EQ(plc.facets.size(), 7u);
     std::size_t quads = 0;
     for (const PlcFacet& f : plc.facets) {
@@ -270,8 +271,8 @@ TEST(WarpedFacets, NonCoplanarFacesAreReadAsTheirTriangles) {
     corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
     EXPECT_EQ(corners, (std::vector<std::uint32_t>{4, 5, 6, 7}));
     // A planar cube is left alone.
-    const Plc flat = read_plc(dir.write("flat.off", warped_cube_off("1", "1")), &warped);
-    EXPECT_EQ(warped, 0u);
+    const Plc flat = read_plc(dir.write("flat.off", warped_cube_off("1", "1")), &reading);
+    EXPECT_EQ(reading.warped_faces, 0u);
     EXPECT_EQ(flat.facets.size(), 6u);
 }
 
