@@ -98,7 +98,8 @@ FacetGeometry::FacetGeometry(const Geometry& geometry, const Plc& plc, const Plc
         }
         return *plane;
     }())
-    , region_(plc, facet, plane_) {
+    , region_(plc, facet, plane_)
+    , triangle_(facet.loops.size() == 1 && facet.loops[0].size() == 3 && facet.holes.empty()) {
     for (const auto& loop : facet.loops) {
         for (std::size_t i = 0; i < loop.size(); ++i) {
             const VertexId a = loop[i];
@@ -113,23 +114,26 @@ FacetGeometry::FacetGeometry(const Geometry& geometry, const Plc& plc, const Plc
 }
 
 const FacetGeometry::Placed& FacetGeometry::placed(VertexId v) {
-    auto it = side_.find(v);
-    if (it == side_.end()) {
+    auto it = placed_.find(v);
+    if (it == placed_.end()) {
         ExactPoint p = exact_point(geometry_.generic(v));
         Rational d = plane_.offset(p);
-        const int s = d > 0 ? 1 : d < 0 ? -1 : 0;
-        it = side_.emplace(v, Placed{s, std::move(d), std::move(p)}).first;
+        it = placed_.emplace(v, Placed{std::move(d), std::move(p)}).first;
     }
     return it->second;
 }
 
 int FacetGeometry::side(VertexId v) {
-    return placed(v).side;
+    auto it = sides_of_.find(v);
+    if (it == sides_of_.end()) {
+        it = sides_of_.emplace(v, predicates::to_int(plane_.side(geometry_.generic(v)))).first;
+    }
+    return it->second;
 }
 
 Rational FacetGeometry::speed(VertexId v) {
     const Placed& p = placed(v);
-    return p.side > 0 ? p.offset : Rational(0);
+    return side(v) > 0 ? p.offset : Rational(0);
 }
 
 bool FacetGeometry::has_left_and_right(std::span<const VertexId> vs) {
@@ -152,6 +156,16 @@ FacetGeometry::Contact FacetGeometry::contact(const TetVertices& t) {
     for (VertexId a : t) {
         for (VertexId b : t) {
             if (side(a) < 0 && side(b) > 0) {
+                if (triangle_) {
+                    return crosses_facet_region(plc_,
+                                                facet_,
+                                                plane_,
+                                                region_,
+                                                geometry_.generic(a),
+                                                geometry_.generic(b))
+                               ? Contact::kCrosses
+                               : Contact::kNone;
+                }
                 // The offsets are kept, so the crossing a + along (b - a) needs no plane
                 // evaluation.
                 const Placed& pa = placed(a);

@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <span>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -82,18 +83,22 @@ private:
     ExactPlane plane_;
     FacetRegion region_;
 
-    /// What side(v) computed about a vertex, kept: the region tests ask again for the exact
-    /// points of the same few vertices, and converting an implicit point costs dozens of GMP
-    /// operations.
+    /// A vertex's point and offset n . (p - a) in rationals, made on the first question that
+    /// needs them (a crossing point, a centroid, a speed) and kept: converting an implicit point
+    /// costs dozens of GMP operations, and most vertices are only asked for their side.
     struct Placed {
-        int side;
         Rational offset;
         ExactPoint point;
     };
 
     const Placed& placed(VertexId v);
 
-    std::map<VertexId, Placed> side_;
+    /// side(v) by the exact orient3d predicate, whose filters decide most signs in doubles.
+    std::unordered_map<VertexId, int> sides_of_;
+    std::map<VertexId, Placed> placed_;
+    /// A triangle without hole points: a left-right edge crosses it when it turns the same way
+    /// around its three sides (three orientations, crosses_facet_region), no crossing point needed.
+    bool triangle_;
     std::vector<std::array<VertexId, 2>> sides_;
     std::set<std::array<VertexId, 2>> side_set_;
     std::set<VertexId> corners_;
