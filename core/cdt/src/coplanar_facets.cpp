@@ -251,9 +251,14 @@ CoplanarMerge merge_coplanar_facets(Plc& plc) {
         if (!plane || !plane_of(g)) {
             return false;
         }
+        // f is planar (the surface check refused it otherwise), so its own corners are on its
+        // plane: of a triangle neighbour only the corner off the shared side is asked, and an
+        // exactly zero orient3d is the predicate's most expensive answer.
+        const Loop& own = plc.facets[f].loops[0];
         const Loop& corners = plc.facets[g].loops[0];
         return std::all_of(corners.begin(), corners.end(), [&](std::uint32_t c) {
-            return plane->side(plc.points.points[c]) == predicates::Sign::kZero;
+            return std::find(own.begin(), own.end(), c) != own.end() ||
+                   plane->side(plc.points.points[c]) == predicates::Sign::kZero;
         });
     };
     FacetGroups groups(n);
