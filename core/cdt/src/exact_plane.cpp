@@ -213,27 +213,111 @@ Point3 rounded_point(const predicates::GenericPoint3& g) {
     return {e[0].convert_to<double>(), e[1].convert_to<double>(), e[2].convert_to<double>()};
 }
 
+namespace {
+
+using Integer = boost::multiprecision::mpz_int;
+
+/// The exponent of the spacing of x's binade: x is an integer multiple of 2^k (x finite).
+int spacing_exponent(double x) {
+    return std::max(std::ilogb(x), -1022) - 52;
+}
+
+/// The least spacing exponent of the nonzero values (INT_MAX when all are zero): each of them is
+/// an integer multiple of 2^result.
+template <std::size_t N>
+int common_spacing(const std::array<double, N>& values) {
+    int k = std::numeric_limits<int>::max();
+    for (const double v : values) {
+        if (v != 0.0) {
+            k = std::min(k, spacing_exponent(v));
+        }
+    }
+    return k;
+}
+
+/// x * 2^-scale, an integer when scale <= spacing_exponent(x) (or x == 0).
+Integer scaled(double x, int scale) {
+    if (x == 0.0) {
+        return Integer(0);
+    }
+    const int k = spacing_exponent(x);
+    Integer result(static_cast<long long>(std::ldexp(x, -k)));  // |mantissa| < 2^53
+    result <<= static_cast<unsigned>(k - scale);
+    return result;
+}
+
+/// numerator * 2^scale / denominator (denominator != 0), reduced once.
+Rational dyadic_quotient(Integer numerator, Integer denominator, int scale) {
+    if (scale >= 0) {
+        numerator <<= static_cast<unsigned>(scale);
+    } else {
+        denominator <<= static_cast<unsigned>(-scale);
+    }
+    return Rational(std::move(numerator), std::move(denominator));
+}
+
+/// a + (tn / td)(b - a) for the integers a, b, tn, td (td != 0), scaled by 2^scale: one
+/// reduction per coordinate, where rational arithmetic reduced after each of its four steps.
+ExactPoint along(const std::array<Integer, 3>& a,
+                 const std::array<Integer, 3>& b,
+                 const Integer& tn,
+                 const Integer& td,
+                 int scale) {
+    ExactPoint x;
+    for (std::size_t k = 0; k < 3; ++k) {
+        x[k] = dyadic_quotient(Integer(a[k] * td + tn * (b[k] - a[k])), td, scale);
+    }
+    return x;
+}
+
+std::array<Integer, 3> scaled(const Point3& p, int scale) {
+    return {scaled(p.x, scale), scaled(p.y, scale), scaled(p.z, scale)};
+}
+
+}  // namespace
+
 ExactPoint exact_point(const predicates::GenericPoint3& g) {
     if (const auto* p = std::get_if<Point3>(&g)) {
         return exact_point(*p);
     }
-    // Both kinds are a + t (b - a) for a rational t.
-    ExactPoint a;
-    ExactPoint b;
-    Rational t;
-    if (const auto* s = std::get_if<predicates::SegmentParameterPoint>(&g)) {
-        a = exact_point(s->a);
-        b = exact_point(s->b);
-        t = Rational(s->numerator) / Rational(s->denominator);
-    } else {
-        const auto& l = std::get<predicates::LinePlanePoint>(g);
-        a = exact_point(l.a);
-        b = exact_point(l.b);
-        const ExactPoint p = exact_point(l.p);
-        const ExactPoint n = cross(minus(exact_point(l.q), p), minus(exact_point(l.r), p));
-        t = dot(n, minus(p, a)) / dot(n, minus(b, a));
+    // Both kinds are a + t (b - a) for a rational t. Every double is an integer times a power of
+    // two, so the defining points scaled by a common power 2^s are integers, and so are the
+    // numerator and denominator of t (scaled by their own power, or, for a line and a plane, as
+    // two dot products of the scaled points: the same power of 2^s in both).
+    if (const auto* sp = std::get_if<predicates::SegmentParameterPoint>(&g)) {
+        int s = common_spacing(
+            std::array<double, 6>{sp->a.x, sp->a.y, sp->a.z, sp->b.x, sp->b.y, sp->b.z});
+        if (s == std::numeric_limits<int>::max()) {
+            s = 0;  // a = b = 0
+        }
+        const int r = common_spacing(std::array<double, 2>{sp->numerator, sp->denominator});
+        return along(scaled(sp->a, s),
+                     scaled(sp->b, s),
+                     scaled(sp->numerator, r),
+                     scaled(sp->denominator, r),
+                     s);
     }
-    return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+    const auto& l = std::get<predicates::LinePlanePoint>(g);
+    int s = std::numeric_limits<int>::max();
+    for (const Point3* q : {&l.a, &l.b, &l.p, &l.q, &l.r}) {
+        s = std::min(s, common_spacing(std::array<double, 3>{q->x, q->y, q->z}));
+    }
+    if (s == std::numeric_limits<int>::max()) {
+        s = 0;
+    }
+    const auto a = scaled(l.a, s);
+    const auto b = scaled(l.b, s);
+    const auto p = scaled(l.p, s);
+    const auto q = scaled(l.q, s);
+    const auto r = scaled(l.r, s);
+    const std::array<Integer, 3> u{q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+    const std::array<Integer, 3> v{r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    const std::array<Integer, 3> n{
+        u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const auto dot = [&](const std::array<Integer, 3>& x, const std::array<Integer, 3>& y) {
+        return Integer(n[0] * (x[0] - y[0]) + n[1] * (x[1] - y[1]) + n[2] * (x[2] - y[2]));
+    };
+    return along(a, b, dot(p, a), dot(b, a), s);
 }
 
 namespace {

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
+#include <utility>
+#include <variant>
 
 #include <gtest/gtest.h>
 
@@ -662,6 +664,68 @@ TEST(ExactPlaneSide, AgreesWithTheRationalOffset) {
             const Rational d = plane.offset(exact_point(p));
             const int expected = d > 0 ? 1 : d < 0 ? -1 : 0;
             EXPECT_EQ(static_cast<int>(plane.side(p)), expected);
+        }
+    }
+}
+
+/// a + t (b - a) in rational arithmetic step by step, t = numerator / denominator or, for a line
+/// and a plane, n . (p - a) / n . (b - a): the definition, against exact_point's integers.
+ExactPoint point_by_definition(const predicates::GenericPoint3& g) {
+    const auto rational = [](const Point3& p) {
+        return ExactPoint{Rational(p.x), Rational(p.y), Rational(p.z)};
+    };
+    ExactPoint a;
+    ExactPoint b;
+    Rational t;
+    if (const auto* s = std::get_if<predicates::SegmentParameterPoint>(&g)) {
+        a = rational(s->a);
+        b = rational(s->b);
+        t = Rational(s->numerator) / Rational(s->denominator);
+    } else {
+        const auto& l = std::get<predicates::LinePlanePoint>(g);
+        a = rational(l.a);
+        b = rational(l.b);
+        const ExactPoint p = rational(l.p);
+        const ExactPoint n = cross(minus(rational(l.q), p), minus(rational(l.r), p));
+        t = dot(n, minus(p, a)) / dot(n, minus(b, a));
+    }
+    return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+}
+
+TEST(ExactPoint, ImplicitPointsEqualTheirDefinitionInEveryExponentRange) {
+    Random random(20261127);
+    // Doubles of random sign and mantissa over exponents from subnormal to near overflow (kept
+    // far enough below it that no difference or cross product of the definition overflows a
+    // double's range: the rationals have no range, but the test's inputs should be points).
+    const auto value = [&](int lo, int hi) {
+        if (random.below(8) == 0) {
+            return 0.0;
+        }
+        const double m = 1 + static_cast<double>(random.below(1ull << 52)) * 0x1p-52;
+        const int e = lo + static_cast<int>(random.below(static_cast<std::uint64_t>(hi - lo + 1)));
+        return (random.below(2) == 0 ? m : -m) * std::ldexp(1.0, e);
+    };
+    for (const auto& [lo, hi] : {std::pair{-1074, -1000},
+                                 std::pair{-60, 60},
+                                 std::pair{-8, 8},
+                                 std::pair{900, 1000},
+                                 std::pair{-1074, 1000}}) {
+        for (int i = 0; i < 300; ++i) {
+            const auto point = [&] { return Point3{value(lo, hi), value(lo, hi), value(lo, hi)}; };
+            double numerator = value(-40, 40);
+            double denominator = value(-40, 40);
+            if (denominator == 0) {
+                denominator = 3;
+            }
+            const predicates::GenericPoint3 s =
+                predicates::SegmentParameterPoint{point(), point(), numerator, denominator};
+            EXPECT_EQ(exact_point(s), point_by_definition(s));
+            const predicates::LinePlanePoint l{point(), point(), point(), point(), point()};
+            const ExactPoint n = cross(minus(exact_point(l.q), exact_point(l.p)),
+                                       minus(exact_point(l.r), exact_point(l.p)));
+            if (dot(n, minus(exact_point(l.b), exact_point(l.a))) != 0) {
+                EXPECT_EQ(exact_point(predicates::GenericPoint3(l)), point_by_definition(l));
+            }
         }
     }
 }
