@@ -68,7 +68,7 @@ inline double insphere_row_permanent(const LiftedRows& rows) {
     const double da = pm2(3, 0);
     const double ac = pm2(0, 2);
     const double bd = pm2(1, 3);
-    // The permanents of the 3x3 minors, in the shape of insphere_determinant's.
+    // The permanents of the 3x3 minors, in the shape of insphere_rows_determinant's.
     const double abc = az[0] * bc + az[1] * ac + az[2] * ab;
     const double bcd = az[1] * cd + az[2] * bd + az[3] * bc;
     const double cda = az[2] * da + az[3] * ac + az[0] * cd;
@@ -86,8 +86,8 @@ inline std::optional<Sign> insphere_permanent(const LiftedRows& rows, double per
     const double(&x)[4] = rows.x;
     const double(&y)[4] = rows.y;
     const double(&z)[4] = rows.z;
-    const double det = insphere_determinant(
-        x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2], x[3], y[3], z[3]);
+    const double det = insphere_rows_determinant(
+        {x[0], y[0], z[0]}, {x[1], y[1], z[1]}, {x[2], y[2], z[2]}, {x[3], y[3], z[3]});
     const double bound = std::max(kInspherePermanentBound * permanent, kInspherePermanentFloor);
     if (!(std::abs(det) > bound)) {
         return std::nullopt;

@@ -1,11 +1,10 @@
 #include "cavity/predicates/orient3d.h"
 
-#include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdint>
 #include <optional>
 
+#include "cavity/predicates/detail/translated_rows.h"
 #include "exact_integer.h"
 #include "orient3d_adaptive.h"
 #include "small_integers.h"
@@ -26,27 +25,18 @@ std::optional<Sign> orient3d_small_integers(const Point3& a,
           (is_small_integer(b) & is_small_integer(c) & is_small_integer(d)))) {
         return std::nullopt;
     }
-    const double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
-    const double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
-    const double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
-    const double max = std::max({std::abs(adx),
-                                 std::abs(ady),
-                                 std::abs(adz),
-                                 std::abs(bdx),
-                                 std::abs(bdy),
-                                 std::abs(bdz),
-                                 std::abs(cdx),
-                                 std::abs(cdy),
-                                 std::abs(cdz)});
-    if (max > 0x1p24) {
+    const Point3 ad = translated(a, d);
+    const Point3 bd = translated(b, d);
+    const Point3 cd = translated(c, d);
+    if (max_magnitude(ad, bd, cd) > 0x1p24) {
         return std::nullopt;
     }
-    const auto bc = static_cast<std::int64_t>(bdx * cdy - bdy * cdx);
-    const auto ca = static_cast<std::int64_t>(cdx * ady - cdy * adx);
-    const auto ab = static_cast<std::int64_t>(adx * bdy - ady * bdx);
-    const Int128 det = Int128{static_cast<std::int64_t>(adz)} * bc +
-                       Int128{static_cast<std::int64_t>(bdz)} * ca +
-                       Int128{static_cast<std::int64_t>(cdz)} * ab;
+    const auto bc = static_cast<std::int64_t>(bd.x * cd.y - bd.y * cd.x);
+    const auto ca = static_cast<std::int64_t>(cd.x * ad.y - cd.y * ad.x);
+    const auto ab = static_cast<std::int64_t>(ad.x * bd.y - ad.y * bd.x);
+    const Int128 det = Int128{static_cast<std::int64_t>(ad.z)} * bc +
+                       Int128{static_cast<std::int64_t>(bd.z)} * ca +
+                       Int128{static_cast<std::int64_t>(cd.z)} * ab;
     return sign_of(det);
 }
 

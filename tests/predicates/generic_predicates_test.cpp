@@ -20,6 +20,7 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include <boost/multiprecision/gmp.hpp>
 #include <gtest/gtest.h>
@@ -178,27 +179,46 @@ struct Range {
     int hi;
 };
 
-/// Random mixes: every point explicit or implicit at random, coordinates 2^k [-1, 1) with k in
-/// one narrow band (tiny, unit, huge) or spread over the whole double range.
-TEST(GenericPredicates, AgreeWithTheOracleOnRandomMixes) {
-    Source s(15);
-    Tally orient, sphere;
-    for (const Range r : {Range{-1074, -1000},
-                          Range{-2, 2},
-                          Range{900, 1023},
-                          Range{-1074, 1023},
-                          Range{-40, 40}}) {
+/// Runs `check` on random mixes of five points, each made by `draw(s, band)`, for each exponent
+/// band in turn: tiny, unit, huge, the whole double range and a moderate one; `rounded_edges` adds
+/// the bands around 2^-150 and 2^150 that bracket the rounded stage's range (generic_filter.h).
+template <class Draw, class Check>
+void for_random_mixes(Source& s, bool rounded_edges, Draw draw, Check check) {
+    std::vector<Range> bands{Range{-1074, -1000}};
+    if (rounded_edges) {
+        bands.push_back(Range{-160, -140});
+    }
+    bands.push_back(Range{-2, 2});
+    if (rounded_edges) {
+        bands.push_back(Range{140, 160});
+    }
+    bands.insert(bands.end(), {Range{900, 1023}, Range{-1074, 1023}, Range{-40, 40}});
+    for (const Range r : bands) {
         // The whole range makes the oracle's rationals thousands of bits long: fewer queries.
         const std::size_t count = r.hi - r.lo > 1000 ? queries() / 8 : queries();
         for (std::size_t n = 0; n < count; ++n) {
             std::array<GenericPoint3, 5> g;
             for (auto& p : g) {
-                p = random_generic(s, s.integer(0, 2), r.lo, r.hi);
+                p = draw(s, r);
             }
-            orient.check(orient3d_staged(g[0], g[1], g[2], g[3]), oracle_orient3d(g), g, 4);
-            sphere.check(insphere_staged(g[0], g[1], g[2], g[3], g[4]), oracle_insphere(g), g, 5);
+            check(g);
         }
     }
+}
+
+/// Random mixes: every point explicit or implicit at random, coordinates 2^k [-1, 1) with k in
+/// one narrow band (tiny, unit, huge) or spread over the whole double range.
+TEST(GenericPredicates, AgreeWithTheOracleOnRandomMixes) {
+    Source s(15);
+    Tally orient, sphere;
+    for_random_mixes(
+        s,
+        /*rounded_edges=*/false,
+        [](Source& t, Range r) { return random_generic(t, t.integer(0, 2), r.lo, r.hi); },
+        [&](const std::array<GenericPoint3, 5>& g) {
+            orient.check(orient3d_staged(g[0], g[1], g[2], g[3]), oracle_orient3d(g), g, 4);
+            sphere.check(insphere_staged(g[0], g[1], g[2], g[3], g[4]), oracle_insphere(g), g, 5);
+        });
     EXPECT_EQ(orient.mismatches, 0u);
     EXPECT_EQ(sphere.mismatches, 0u);
 }
@@ -516,24 +536,15 @@ struct RoundedTally {
 TEST(GenericPredicates, RoundedStageAgreesWithTheOracleOnRandomMixes) {
     Source s(25);
     RoundedTally tally;
-    for (const Range r : {Range{-1074, -1000},
-                          Range{-160, -140},
-                          Range{-2, 2},
-                          Range{140, 160},
-                          Range{900, 1023},
-                          Range{-1074, 1023},
-                          Range{-40, 40}}) {
-        const std::size_t count = r.hi - r.lo > 1000 ? queries() / 8 : queries();
-        for (std::size_t n = 0; n < count; ++n) {
-            std::array<GenericPoint3, 5> g;
-            for (auto& p : g) {
-                const int kind = s.integer(0, 3);
-                p = kind == 3 ? grazing_line_plane_point(s, r.lo, r.hi, s.integer(10, 60))
-                              : random_generic(s, kind, r.lo, r.hi);
-            }
-            tally.run(s, g);
-        }
-    }
+    for_random_mixes(
+        s,
+        /*rounded_edges=*/true,
+        [](Source& t, Range r) {
+            const int kind = t.integer(0, 3);
+            return kind == 3 ? grazing_line_plane_point(t, r.lo, r.hi, t.integer(10, 60))
+                             : random_generic(t, kind, r.lo, r.hi);
+        },
+        [&](const std::array<GenericPoint3, 5>& g) { tally.run(s, g); });
     EXPECT_EQ(tally.mismatches, 0u);
     EXPECT_EQ(tally.loose_bounds, 0u);
 }

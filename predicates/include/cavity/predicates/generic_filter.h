@@ -1,8 +1,14 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
+#include <tuple>
 
+#include "cavity/predicates/detail/insphere_filter.h"
+#include "cavity/predicates/detail/orient3d_filter.h"
+#include "cavity/predicates/detail/translated_rows.h"
 #include "cavity/predicates/generic_point.h"
 #include "cavity/predicates/point.h"
 
@@ -26,12 +32,13 @@
 ///  (1) the inputs: for one monomial, |prod x - prod v| <= prod(|v| + eta) - prod |v|
 ///      <= (m + eta)^k - m^k <= k eta (m + eta)^(k-1) (telescoping, then the mean value theorem),
 ///      so |P(x) - P(v)| <= N k eta M^(k-1) with M = m + eta;
-///  (2) the evaluation: along the formulas below every monomial of P(v) passes through at most
-///      j roundings (orient3d j = 5: the 2x2 product and difference, the product by the third
-///      row, the sum of three; insphere j = 11: the lift's square and two sums, the 3x3 minor's
-///      five, their product, the final sum of four), so by the standard lemma (Higham, Accuracy and
-///      Stability of Numerical Algorithms, 3.1 and 3.3) |fl(P(v)) - P(v)| <= gamma_j N m^k with
-///      gamma_j = j u / (1 - j u) when nothing underflows.
+///  (2) the evaluation: along the shared expansions (orient3d_rows_determinant and
+///      insphere_rows_determinant, the ones every other floating-point stage uses) every monomial
+///      of P(v) passes through at most j roundings (orient3d j = 5: the 2x2 product and
+///      difference, the product by the z column, the sum of three; insphere j = 11: the lift's
+///      square and two sums, the 3x3 minor's five, their product, the final sum of four), so by
+///      the standard lemma (Higham, Accuracy and Stability of Numerical Algorithms, 3.1 and 3.3)
+///      |fl(P(v)) - P(v)| <= gamma_j N m^k with gamma_j = j u / (1 - j u) when nothing underflows.
 /// orient3d: 18 eta M^2 + 6 gamma_5 m^3 <= 18 eta M^2 + 30.001 u m^3;
 /// insphere: 360 eta M^4 + 72 gamma_11 m^5 <= 360 eta M^4 + 792.01 u m^5.
 /// The code uses 19 and 31 u, 361 and 793 u. The extra is what makes the bound computed in
@@ -67,34 +74,28 @@ inline bool in_rounded_range(double m) {
     return m >= kRoundedMin && m <= kRoundedMax;  // false on NaN
 }
 
-}  // namespace detail
+/// A query of rounded points translated to its last one, `origin`: the rows v_i = fl(r_i -
+/// r_origin), m = max |v_i| over every coordinate, eta and M = m + eta, as in the bound above.
+template <std::size_t N>
+struct RoundedRows {
+    std::array<Point3, N> v;
+    double m;
+    double eta;
+    double big_m;
+};
 
-/// The sign of orient3d (orient3d.h's convention) on the exact points, or 0 when undecided.
-inline int orient3d_rounded(const RoundedPoint& a,
-                            const RoundedPoint& b,
-                            const RoundedPoint& c,
-                            const RoundedPoint& d) {
-    const double adx = a.p.x - d.p.x, ady = a.p.y - d.p.y, adz = a.p.z - d.p.z;
-    const double bdx = b.p.x - d.p.x, bdy = b.p.y - d.p.y, bdz = b.p.z - d.p.z;
-    const double cdx = c.p.x - d.p.x, cdy = c.p.y - d.p.y, cdz = c.p.z - d.p.z;
-    const double m = std::max({std::abs(adx),
-                               std::abs(ady),
-                               std::abs(adz),
-                               std::abs(bdx),
-                               std::abs(bdy),
-                               std::abs(bdz),
-                               std::abs(cdx),
-                               std::abs(cdy),
-                               std::abs(cdz)});
-    if (!detail::in_rounded_range(m)) {
-        return 0;
-    }
-    const double det = adx * (bdy * cdz - bdz * cdy) + ady * (bdz * cdx - bdx * cdz) +
-                       adz * (bdx * cdy - bdy * cdx);
-    const double eta =
-        (std::max({a.error, b.error, c.error}) + d.error) + detail::kUnitRoundoff * m;
-    const double big_m = m + eta;
-    const double bound = 19.0 * eta * (big_m * big_m) + 31.0 * detail::kUnitRoundoff * (m * m * m);
+template <class... Rounded>
+inline RoundedRows<sizeof...(Rounded)> rounded_rows(const RoundedPoint& origin,
+                                                    const Rounded&... points) {
+    RoundedRows<sizeof...(Rounded)> rows{{translated(points.p, origin.p)...}, 0.0, 0.0, 0.0};
+    rows.m = std::apply([](const auto&... v) { return max_magnitude(v...); }, rows.v);
+    rows.eta = (std::max({points.error...}) + origin.error) + kUnitRoundoff * rows.m;
+    rows.big_m = rows.m + rows.eta;
+    return rows;
+}
+
+/// The sign of det when |det| exceeds the bound, else 0 (also when either is NaN).
+inline int rounded_sign(double det, double bound) {
     if (det > bound) {
         return 1;
     }
@@ -104,62 +105,39 @@ inline int orient3d_rounded(const RoundedPoint& a,
     return 0;
 }
 
+}  // namespace detail
+
+/// The sign of orient3d (orient3d.h's convention) on the exact points, or 0 when undecided.
+inline int orient3d_rounded(const RoundedPoint& a,
+                            const RoundedPoint& b,
+                            const RoundedPoint& c,
+                            const RoundedPoint& d) {
+    const auto q = detail::rounded_rows(d, a, b, c);
+    if (!detail::in_rounded_range(q.m)) {
+        return 0;
+    }
+    const double det = detail::orient3d_rows_determinant(q.v[0], q.v[1], q.v[2]);
+    const double bound =
+        19.0 * q.eta * (q.big_m * q.big_m) + 31.0 * detail::kUnitRoundoff * (q.m * q.m * q.m);
+    return detail::rounded_sign(det, bound);
+}
+
 /// The sign of insphere (insphere.h's convention) on the exact points, or 0 when undecided.
 inline int insphere_rounded(const RoundedPoint& a,
                             const RoundedPoint& b,
                             const RoundedPoint& c,
                             const RoundedPoint& d,
                             const RoundedPoint& e) {
-    const double aex = a.p.x - e.p.x, aey = a.p.y - e.p.y, aez = a.p.z - e.p.z;
-    const double bex = b.p.x - e.p.x, bey = b.p.y - e.p.y, bez = b.p.z - e.p.z;
-    const double cex = c.p.x - e.p.x, cey = c.p.y - e.p.y, cez = c.p.z - e.p.z;
-    const double dex = d.p.x - e.p.x, dey = d.p.y - e.p.y, dez = d.p.z - e.p.z;
-    const double m = std::max({std::abs(aex),
-                               std::abs(aey),
-                               std::abs(aez),
-                               std::abs(bex),
-                               std::abs(bey),
-                               std::abs(bez),
-                               std::abs(cex),
-                               std::abs(cey),
-                               std::abs(cez),
-                               std::abs(dex),
-                               std::abs(dey),
-                               std::abs(dez)});
-    if (!detail::in_rounded_range(m)) {
+    const auto q = detail::rounded_rows(e, a, b, c, d);
+    if (!detail::in_rounded_range(q.m)) {
         return 0;
     }
-    // det of the rows (v, |v|^2) by cofactors of the lift column: four 3x3 minors sharing six
-    // 2x2 ones.
-    const double ab = aex * bey - bex * aey;
-    const double bc = bex * cey - cex * bey;
-    const double cd = cex * dey - dex * cey;
-    const double da = dex * aey - aex * dey;
-    const double ac = aex * cey - cex * aey;
-    const double bd = bex * dey - dex * bey;
-    const double abc = aez * bc - bez * ac + cez * ab;
-    const double bcd = bez * cd - cez * bd + dez * bc;
-    const double cda = cez * da + dez * ac + aez * cd;
-    const double dab = dez * ab + aez * bd + bez * da;
-    const double alift = aex * aex + aey * aey + aez * aez;
-    const double blift = bex * bex + bey * bey + bez * bez;
-    const double clift = cex * cex + cey * cey + cez * cez;
-    const double dlift = dex * dex + dey * dey + dez * dez;
-    const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-    const double eta =
-        (std::max({a.error, b.error, c.error, d.error}) + e.error) + detail::kUnitRoundoff * m;
-    const double big_m = m + eta;
-    const double big_m2 = big_m * big_m;
-    const double m2 = m * m;
+    const double det = detail::insphere_rows_determinant(q.v[0], q.v[1], q.v[2], q.v[3]);
+    const double big_m2 = q.big_m * q.big_m;
+    const double m2 = q.m * q.m;
     const double bound =
-        361.0 * eta * (big_m2 * big_m2) + 793.0 * detail::kUnitRoundoff * (m2 * m2 * m);
-    if (det > bound) {
-        return 1;
-    }
-    if (-det > bound) {
-        return -1;
-    }
-    return 0;
+        361.0 * q.eta * (big_m2 * big_m2) + 793.0 * detail::kUnitRoundoff * (m2 * m2 * q.m);
+    return detail::rounded_sign(det, bound);
 }
 
 }  // namespace cavity::predicates

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cavity/predicates/detail/translated_rows.h"
 #include "cavity/predicates/point.h"
 
 namespace cavity::predicates::detail {
@@ -11,7 +12,8 @@ namespace cavity::predicates::detail {
 //
 // Evaluation (Shewchuk's order): with differences to e, the 2x2 minors ab = aex*bey - bex*aey
 // etc., the 3x3 minors abc = aez*bc - bez*ac + cez*ab etc. and the lifts alift = aex^2 + aey^2 +
-// aez^2,  det = (dlift*abc - clift*dab) + (blift*cda - alift*bcd).
+// aez^2,  det = (dlift*abc - clift*dab) + (blift*cda - alift*bcd) (lifted_determinant and
+// squared_norm, translated_rows.h).
 //
 // Error bound (u = 2^-53). Expanded, det has 4 * 3 * 6 = 72 monomials x*y*z*t^2 (three from the
 // lift times six from the 3x3 minor, for each of the four rows), each at most
@@ -30,87 +32,40 @@ inline constexpr double kInsphereErrorBound = 1224.0 * 0x1p-53;
 inline constexpr double kInsphereMinMax = 0x1p-190;
 inline constexpr double kInsphereMaxMax = 0x1p190;
 
-/// The insphere determinant det[p-e, |p-e|^2] in plain double arithmetic, from the rounded
-/// differences p-e (Shewchuk's order, above), shared by the semi-static filter below and the
-/// static one (insphere_static_filter.h) so that both bounds describe the same evaluation.
-[[gnu::always_inline]] inline double insphere_determinant(double aex,
-                                                          double aey,
-                                                          double aez,
-                                                          double bex,
-                                                          double bey,
-                                                          double bez,
-                                                          double cex,
-                                                          double cey,
-                                                          double cez,
-                                                          double dex,
-                                                          double dey,
-                                                          double dez) {
-    const double ab = aex * bey - bex * aey;
-    const double bc = bex * cey - cex * bey;
-    const double cd = cex * dey - dex * cey;
-    const double da = dex * aey - aex * dey;
-    const double ac = aex * cey - cex * aey;
-    const double bd = bex * dey - dex * bey;
-
-    const double abc = aez * bc - bez * ac + cez * ab;
-    const double bcd = bez * cd - cez * bd + dez * bc;
-    const double cda = cez * da + dez * ac + aez * cd;
-    const double dab = dez * ab + aez * bd + bez * da;
-
-    const double alift = aex * aex + aey * aey + aez * aez;
-    const double blift = bex * bex + bey * bey + bez * bez;
-    const double clift = cex * cex + cey * cey + cez * cez;
-    const double dlift = dex * dex + dey * dey + dez * dez;
-
-    return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+/// The insphere determinant det[p-e, |p-e|^2] in plain double arithmetic, from the rows p-e
+/// already translated (Shewchuk's order, above: lifted_determinant with the lifts squared_norm),
+/// shared by the semi-static filter below, the static one (insphere_static_filter.h) and the
+/// rounded stage (generic_filter.h) so that every bound describes the same evaluation.
+[[gnu::always_inline]] inline double insphere_rows_determinant(const Point3& ae,
+                                                               const Point3& be,
+                                                               const Point3& ce,
+                                                               const Point3& de) {
+    return lifted_determinant(
+        ae, be, ce, de, squared_norm(ae), squared_norm(be), squared_norm(ce), squared_norm(de));
 }
 
-/// insphere_determinant of the rounded differences of a..d to e: the evaluation of the static
+/// insphere_rows_determinant of the rounded differences of a..d to e: the evaluation of the static
 /// filter and of the lattice test (lattice.h), which take the differences for nothing else.
 [[gnu::always_inline]] inline double insphere_determinant(
     const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
-    return insphere_determinant(a.x - e.x,
-                                a.y - e.y,
-                                a.z - e.z,
-                                b.x - e.x,
-                                b.y - e.y,
-                                b.z - e.z,
-                                c.x - e.x,
-                                c.y - e.y,
-                                c.z - e.z,
-                                d.x - e.x,
-                                d.y - e.y,
-                                d.z - e.z);
+    return insphere_rows_determinant(
+        translated(a, e), translated(b, e), translated(c, e), translated(d, e));
 }
 
 /// +1 or -1 when the sign of det[p-e, |p-e|^2] (p = a..d) is certified, 0 when undecided.
 [[gnu::always_inline]] inline int insphere_filter(
     const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
-    const double aex = a.x - e.x;
-    const double aey = a.y - e.y;
-    const double aez = a.z - e.z;
-    const double bex = b.x - e.x;
-    const double bey = b.y - e.y;
-    const double bez = b.z - e.z;
-    const double cex = c.x - e.x;
-    const double cey = c.y - e.y;
-    const double cez = c.z - e.z;
-    const double dex = d.x - e.x;
-    const double dey = d.y - e.y;
-    const double dez = d.z - e.z;
+    const Point3 ae = translated(a, e);
+    const Point3 be = translated(b, e);
+    const Point3 ce = translated(c, e);
+    const Point3 de = translated(d, e);
 
-    const double det =
-        insphere_determinant(aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez);
+    const double det = insphere_rows_determinant(ae, be, ce, de);
 
-    const double maxx =
-        std::max(std::max(std::abs(aex), std::abs(bex)), std::max(std::abs(cex), std::abs(dex)));
-    const double maxy =
-        std::max(std::max(std::abs(aey), std::abs(bey)), std::max(std::abs(cey), std::abs(dey)));
-    const double maxz =
-        std::max(std::max(std::abs(aez), std::abs(bez)), std::max(std::abs(cez), std::abs(dez)));
-    const double lo = std::min(std::min(maxx, maxy), maxz);
-    const double m = std::max(std::max(maxx, maxy), maxz);
-    const double eps = kInsphereErrorBound * maxx * maxy * maxz * (m * m);
+    const Point3 cmax = column_maxima(ae, be, ce, de);
+    const double lo = std::min(std::min(cmax.x, cmax.y), cmax.z);
+    const double m = std::max(std::max(cmax.x, cmax.y), cmax.z);
+    const double eps = kInsphereErrorBound * cmax.x * cmax.y * cmax.z * (m * m);
     // One well-predicted branch: the guards and the bound are combined without short-circuit
     // (eps may be inf or 0 when a guard fails; the guard then decides), and the sign is computed
     // without branching on the random sign of det.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cavity/predicates/detail/translated_rows.h"
 #include "cavity/predicates/point.h"
 
 namespace cavity::predicates::detail {
@@ -11,7 +12,8 @@ namespace cavity::predicates::detail {
 //
 // Error bound. With u = 2^-53 and exact differences adx = a.x - d.x etc., the determinant
 //   det = adz (bdx cdy - bdy cdx) + bdz (cdx ady - cdy adx) + cdz (adx bdy - ady bdx)
-// has 6 monomials. Along any monomial's path through the evaluation the number of roundings is
+// (evaluated as written by orient3d_rows_determinant, translated_rows.h) has 6 monomials. Along
+// any monomial's path through the evaluation the number of roundings is
 //   3 (the three differences) + 1 (the product bdx*cdy) + 1 (the 2x2 minor's subtraction)
 //   + 1 (the product with adz) + 2 (the sum of three terms) = 8,
 // so |computed - det| <= gamma_8 * sum|monomials| (Higham, Accuracy and Stability, §3.1), with
@@ -28,56 +30,26 @@ inline constexpr double kOrient3dErrorBound = 50.0 * 0x1p-53;
 inline constexpr double kOrient3dMinMax = 0x1p-300;
 inline constexpr double kOrient3dMaxMax = 0x1p330;
 
-/// The orient3d determinant in plain double arithmetic, from the rounded differences to d (the
-/// order above), shared by the semi-static filter below and the static one
-/// (orient3d_static_filter.h) so that both bounds describe the same evaluation.
-[[gnu::always_inline]] inline double orient3d_determinant(double adx,
-                                                          double ady,
-                                                          double adz,
-                                                          double bdx,
-                                                          double bdy,
-                                                          double bdz,
-                                                          double cdx,
-                                                          double cdy,
-                                                          double cdz) {
-    return adz * (bdx * cdy - bdy * cdx) + bdz * (cdx * ady - cdy * adx) +
-           cdz * (adx * bdy - ady * bdx);
-}
-
-/// orient3d_determinant of the rounded differences of a, b, c to d: the evaluation of the static
-/// filter and of the lattice test (lattice.h), which take the differences for nothing else.
+/// orient3d_rows_determinant of the rounded differences of a, b, c to d: the evaluation of the
+/// static filter and of the lattice test (lattice.h), which take the differences for nothing else.
 [[gnu::always_inline]] inline double orient3d_determinant(const Point3& a,
                                                           const Point3& b,
                                                           const Point3& c,
                                                           const Point3& d) {
-    return orient3d_determinant(a.x - d.x,
-                                a.y - d.y,
-                                a.z - d.z,
-                                b.x - d.x,
-                                b.y - d.y,
-                                b.z - d.z,
-                                c.x - d.x,
-                                c.y - d.y,
-                                c.z - d.z);
+    return orient3d_rows_determinant(translated(a, d), translated(b, d), translated(c, d));
 }
 
 /// +1 or -1 when the sign of det[a-d; b-d; c-d] is certified, 0 when the filter cannot decide.
 inline int orient3d_filter(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
-    const double adx = a.x - d.x;
-    const double ady = a.y - d.y;
-    const double adz = a.z - d.z;
-    const double bdx = b.x - d.x;
-    const double bdy = b.y - d.y;
-    const double bdz = b.z - d.z;
-    const double cdx = c.x - d.x;
-    const double cdy = c.y - d.y;
-    const double cdz = c.z - d.z;
+    const Point3 ad = translated(a, d);
+    const Point3 bd = translated(b, d);
+    const Point3 cd = translated(c, d);
 
-    const double det = orient3d_determinant(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz);
+    const double det = orient3d_rows_determinant(ad, bd, cd);
 
-    const double maxx = std::max(std::max(std::abs(adx), std::abs(bdx)), std::abs(cdx));
-    const double maxy = std::max(std::max(std::abs(ady), std::abs(bdy)), std::abs(cdy));
-    const double maxz = std::max(std::max(std::abs(adz), std::abs(bdz)), std::abs(cdz));
+    const double maxx = std::max(std::max(std::abs(ad.x), std::abs(bd.x)), std::abs(cd.x));
+    const double maxy = std::max(std::max(std::abs(ad.y), std::abs(bd.y)), std::abs(cd.y));
+    const double maxz = std::max(std::max(std::abs(ad.z), std::abs(bd.z)), std::abs(cd.z));
     const double lo = std::min(std::min(maxx, maxy), maxz);
     const double hi = std::max(std::max(maxx, maxy), maxz);
     const double eps = kOrient3dErrorBound * maxx * maxy * maxz;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cavity/predicates/detail/translated_rows.h"
 #include "cavity/predicates/point.h"
 
 namespace cavity::predicates::detail {
@@ -37,53 +38,31 @@ inline int orient4d_filter(const WeightedPoint3& a,
                            const WeightedPoint3& c,
                            const WeightedPoint3& d,
                            const WeightedPoint3& e) {
-    const double aex = a.x - e.x;
-    const double aey = a.y - e.y;
-    const double aez = a.z - e.z;
+    // The rows and weights translated to e; the rows are those of insphere_rows_determinant.
+    const Point3 ae = translated(a, e);
+    const Point3 be = translated(b, e);
+    const Point3 ce = translated(c, e);
+    const Point3 de = translated(d, e);
     const double aew = a.w - e.w;
-    const double bex = b.x - e.x;
-    const double bey = b.y - e.y;
-    const double bez = b.z - e.z;
     const double bew = b.w - e.w;
-    const double cex = c.x - e.x;
-    const double cey = c.y - e.y;
-    const double cez = c.z - e.z;
     const double cew = c.w - e.w;
-    const double dex = d.x - e.x;
-    const double dey = d.y - e.y;
-    const double dez = d.z - e.z;
     const double dew = d.w - e.w;
 
-    const double ab = aex * bey - bex * aey;
-    const double bc = bex * cey - cex * bey;
-    const double cd = cex * dey - dex * cey;
-    const double da = dex * aey - aex * dey;
-    const double ac = aex * cey - cex * aey;
-    const double bd = bex * dey - dex * bey;
+    const double det = lifted_determinant(ae,
+                                          be,
+                                          ce,
+                                          de,
+                                          squared_norm(ae) - aew,
+                                          squared_norm(be) - bew,
+                                          squared_norm(ce) - cew,
+                                          squared_norm(de) - dew);
 
-    const double abc = aez * bc - bez * ac + cez * ab;
-    const double bcd = bez * cd - cez * bd + dez * bc;
-    const double cda = cez * da + dez * ac + aez * cd;
-    const double dab = dez * ab + aez * bd + bez * da;
-
-    const double alift = aex * aex + aey * aey + aez * aez - aew;
-    const double blift = bex * bex + bey * bey + bez * bez - bew;
-    const double clift = cex * cex + cey * cey + cez * cez - cew;
-    const double dlift = dex * dex + dey * dey + dez * dez - dew;
-
-    const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-
-    const double maxx =
-        std::max(std::max(std::abs(aex), std::abs(bex)), std::max(std::abs(cex), std::abs(dex)));
-    const double maxy =
-        std::max(std::max(std::abs(aey), std::abs(bey)), std::max(std::abs(cey), std::abs(dey)));
-    const double maxz =
-        std::max(std::max(std::abs(aez), std::abs(bez)), std::max(std::abs(cez), std::abs(dez)));
+    const Point3 cmax = column_maxima(ae, be, ce, de);
     const double maxw =
         std::max(std::max(std::abs(aew), std::abs(bew)), std::max(std::abs(cew), std::abs(dew)));
-    const double lo = std::min(std::min(maxx, maxy), maxz);
-    const double m = std::max(std::max(maxx, maxy), maxz);
-    const double eps = kOrient4dErrorBound * maxx * maxy * maxz * std::max(m * m, maxw);
+    const double lo = std::min(std::min(cmax.x, cmax.y), cmax.z);
+    const double m = std::max(std::max(cmax.x, cmax.y), cmax.z);
+    const double eps = kOrient4dErrorBound * cmax.x * cmax.y * cmax.z * std::max(m * m, maxw);
     // One well-predicted branch: the guards and the bound are combined without short-circuit
     // (eps may be inf or 0 when a guard fails; the guard then decides), and the sign is computed
     // without branching on the random sign of det.
