@@ -53,9 +53,17 @@ Point3 nudged(Point3 u, int axis) {
 
 /// Whether u, v, w are collinear, exactly. With s = u + delta e_k, subtracting row u - s from the
 /// others gives orient3d(u, v, w, s) = det[u - s; v - u; w - u] = -delta ((v - u) x (w - u))_k:
-/// zero for k = x, y, z exactly when the cross product is zero.
+/// zero for k = x, y, z exactly when the cross product is zero. The component that is largest in
+/// doubles goes first: on the axis-aligned facets of CAD models the other two are exact zeros,
+/// which orient3d proves only in its slow stages, and the filter settles a clear nonzero.
 bool collinear(const Point3& u, const Point3& v, const Point3& w) {
-    for (int axis = 0; axis < 3; ++axis) {
+    const double ax = v.x - u.x, ay = v.y - u.y, az = v.z - u.z;
+    const double bx = w.x - u.x, by = w.y - u.y, bz = w.z - u.z;
+    const std::array<double, 3> cross{
+        std::abs(ay * bz - az * by), std::abs(az * bx - ax * bz), std::abs(ax * by - ay * bx)};
+    const int first =
+        cross[2] >= cross[1] ? (cross[2] >= cross[0] ? 2 : 0) : (cross[1] >= cross[0] ? 1 : 0);
+    for (const int axis : {first, (first + 1) % 3, (first + 2) % 3}) {
         if (orient3d(u, v, w, nudged(u, axis)) != Sign::kZero) {
             return false;
         }
