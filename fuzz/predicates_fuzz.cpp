@@ -3,7 +3,8 @@
 // the oracle's sign. A disagreement prints the query as a `cavity sign` line and aborts.
 // The same doubles also define a line-plane and a segment point (generic_point.h): the
 // floating-point stage on their naively rounded coordinates (generic_filter.h), when it answers,
-// must give the sign of the generic predicates' exact stages.
+// must give the sign of the generic predicates' exact stages. Segment and line-plane points made
+// on the plane of three of the points, with one of those, must give orient3d and insphere 0.
 
 #include <array>
 #include <cmath>
@@ -114,6 +115,28 @@ void check_generic(const std::array<double, kValues>& v) {
                   insphere(g[0], g[1], g[2], g[3], g[4]));
 }
 
+/// Points on the plane of p(0), p(1), p(2) by construction (on a line when those are collinear,
+/// and then the line-plane point is undefined): every orient3d and insphere of them is 0.
+void check_coplanar(const std::array<double, kValues>& v) {
+    const auto p = [&](std::size_t i) { return Point3{v[3 * i], v[3 * i + 1], v[3 * i + 2]}; };
+    const auto lpi = line_plane_point(p(3), p(4), p(0), p(1), p(2));
+    const auto on_01 = segment_parameter_point(p(0), p(1), v[18], v[19]);
+    const auto on_12 = segment_parameter_point(p(1), p(2), v[19], v[18]);
+    if (!lpi || !on_01 || !on_12) {
+        return;
+    }
+    const std::array<GenericPoint3, 5> g{*on_01, p(2), *lpi, *on_12, p(0)};
+    const Sign orient = orient3d(g[0], g[1], g[2], g[3]);
+    const Sign sphere = insphere(g[0], g[1], g[2], g[3], g[4]);
+    if (orient != Sign::kZero || sphere != Sign::kZero) {
+        std::fprintf(stderr,
+                     "coplanar generic points: orient3d %d, insphere %d\n",
+                     to_int(orient),
+                     to_int(sphere));
+        std::abort();
+    }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -141,5 +164,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           orient4d_staged(w(0), w(1), w(2), w(3), w(4)).sign,
           oracle::orient4d(w(0), w(1), w(2), w(3), w(4)));
     check_generic(v);
+    check_coplanar(v);
     return 0;
 }

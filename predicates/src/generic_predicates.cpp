@@ -14,6 +14,7 @@
 #include "cavity/predicates/generic_filter.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"
+#include "coplanarity_certificate.h"
 #include "homogeneous.h"
 #include "interval.h"
 
@@ -35,9 +36,11 @@
 // bound on their distance to the exact ones, and tries the floating-point stage of
 // generic_filter.h: a 4x4 or 3x3 determinant in doubles, several times cheaper than the
 // determinants of intervals. When that cannot decide, it answers when the homogeneous
-// determinant's interval and those of the W exclude zero. The exact stage
-// evaluates the same formulas over GMP integers after scaling the defining doubles to integers
-// (homogeneous.h says why that keeps the signs).
+// determinant's interval and those of the W exclude zero. What the filter leaves is mostly
+// exactly coplanar (flat hull faces, the validator's checks); coplanarity_certificate.h proves
+// those zeros from exact orient3d on the defining doubles, some twenty times cheaper than the
+// integers. The exact stage evaluates the same formulas over GMP integers after scaling the
+// defining doubles to integers (homogeneous.h says why that keeps the signs).
 namespace cavity::predicates {
 
 namespace {
@@ -269,6 +272,9 @@ Verdict orient3d_staged(const GenericPoint3& a,
     if (const int s = orient3d_sign(rows)) {
         return {static_cast<Sign>(s), Stage::kFilter};
     }
+    if (detail::certified_coplanar(g)) {
+        return {Sign::kZero, Stage::kExact};
+    }
     return {static_cast<Sign>(orient3d_sign(exact_rows(g))), Stage::kExact};
 }
 
@@ -292,6 +298,9 @@ Verdict insphere_staged(const GenericPoint3& a,
     }
     if (const int s = insphere_sign(rows)) {
         return {static_cast<Sign>(s), Stage::kFilter};
+    }
+    if (detail::certified_coplanar(g)) {
+        return {Sign::kZero, Stage::kExact};
     }
     return {static_cast<Sign>(insphere_sign(exact_rows(g))), Stage::kExact};
 }

@@ -28,6 +28,7 @@
 #include "cavity/predicates/generic_filter.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"
+#include "coplanarity_certificate.h"
 #include "random_source.h"
 
 namespace cavity::predicates {
@@ -404,6 +405,99 @@ TEST(GenericPredicates, AgreeWithTheOracleNearDegeneracies) {
     }
     EXPECT_EQ(orient.mismatches, 0u);
     EXPECT_EQ(sphere.mismatches, 0u);
+}
+
+/// Queries that the structural certificate (coplanarity_certificate.h) must prove zero, or must
+/// leave alone once moved: points on the plane of three random points, or on one line. Explicit
+/// points of the plane, segment points between them, line-plane points on it through a line
+/// crossing it (their plane another triple of it, so the certificate matches it through orient3d)
+/// or through a line inside it (their plane a random one); on a line the same kinds. Every
+/// result against the oracle, as given and with one defining double moved by 1-4 ulps.
+TEST(GenericPredicates, CoplanarAndCollinearMixesAgreeWithTheOracle) {
+    Source s(2323);
+    Tally orient, sphere, moved;
+    std::size_t uncertified = 0;
+    std::size_t unsound = 0;
+    for (const int scale : {-1070, -30, 0, 30, 960}) {
+        const auto at = [&](int x, int y, int z) {
+            return Point3{std::ldexp(x, scale), std::ldexp(y, scale), std::ldexp(z, scale)};
+        };
+        const auto random_at = [&] {
+            return at(s.integer(-50, 50), s.integer(-50, 50), s.integer(-50, 50));
+        };
+        for (std::size_t n = 0; n < queries() / 4; ++n) {
+            const bool on_line = s.integer(0, 3) == 0;
+            const Point3 p = random_at(), q = random_at(), r = random_at();
+            // p + i (q - p) + j (r - p): exact for these small integers; j = 0 on a line.
+            const auto inside = [&] {
+                const int i = s.integer(-3, 3), j = on_line ? 0 : s.integer(-3, 3);
+                return Point3{p.x + (q.x - p.x) * i + (r.x - p.x) * j,
+                              p.y + (q.y - p.y) * i + (r.y - p.y) * j,
+                              p.z + (q.z - p.z) * i + (r.z - p.z) * j};
+            };
+            const auto point = [&]() -> GenericPoint3 {
+                for (;;) {
+                    switch (s.integer(0, 3)) {
+                        case 0:
+                            return inside();
+                        case 1:
+                            return SegmentParameterPoint{
+                                inside(), inside(), double(s.integer(-9, 9)), 8.0};
+                        case 2:
+                            if (on_line) {
+                                continue;  // a line crossing a line meets it nowhere in general
+                            }
+                            if (auto l = line_plane_point(
+                                    random_at(), random_at(), inside(), inside(), inside())) {
+                                return *l;
+                            }
+                            break;
+                        default:
+                            if (auto l = line_plane_point(
+                                    inside(), inside(), random_at(), random_at(), random_at())) {
+                                return *l;
+                            }
+                            break;
+                    }
+                }
+            };
+            std::array<GenericPoint3, 5> g;
+            for (auto& x : g) {
+                x = point();
+            }
+            // The certificate proves these zeros itself, without the integers.
+            const std::array<const GenericPoint3*, 5> all{&g[0], &g[1], &g[2], &g[3], &g[4]};
+            uncertified += detail::certified_coplanar(all) ? 0 : 1;
+            orient.check(orient3d_staged(g[0], g[1], g[2], g[3]), oracle_orient3d(g), g, 4);
+            sphere.check(insphere_staged(g[0], g[1], g[2], g[3], g[4]), oracle_insphere(g), g, 5);
+            // One defining double moved: mostly off the plane, a tiny nonzero determinant.
+            GenericPoint3& target = g[static_cast<std::size_t>(s.integer(0, 3))];
+            Point3* x = std::get_if<Point3>(&target);
+            if (auto* seg = std::get_if<SegmentParameterPoint>(&target)) {
+                x = s.integer(0, 1) == 0 ? &seg->a : &seg->b;
+            } else if (auto* l = std::get_if<LinePlanePoint>(&target)) {
+                x = std::array<Point3*, 5>{&l->a, &l->b, &l->p, &l->q, &l->r}[s.integer(0, 4)];
+            }
+            double& v = std::array<double*, 3>{&x->x, &x->y, &x->z}[s.integer(0, 2)][0];
+            v = s.nudged(v);
+            if (const auto* l = std::get_if<LinePlanePoint>(&target);
+                l != nullptr && !line_plane_point(l->a, l->b, l->p, l->q, l->r)) {
+                continue;  // the move lost the intersection: no point for the oracle
+            }
+            const Sign expected = oracle_orient3d(g);
+            moved.check(orient3d_staged(g[0], g[1], g[2], g[3]), expected, g, 4);
+            const std::array<const GenericPoint3*, 4> four{&g[0], &g[1], &g[2], &g[3]};
+            unsound += detail::certified_coplanar(four) && expected != Sign::kZero ? 1 : 0;
+        }
+    }
+    EXPECT_EQ(uncertified, 0u);
+    EXPECT_EQ(unsound, 0u);
+    EXPECT_EQ(orient.mismatches, 0u);
+    EXPECT_EQ(sphere.mismatches, 0u);
+    EXPECT_EQ(moved.mismatches, 0u);
+    // Every unmoved query is flat: orient3d of four and insphere of five coplanar points are 0.
+    EXPECT_EQ(orient.zeros, 5 * (queries() / 4));
+    EXPECT_EQ(sphere.zeros, 5 * (queries() / 4));
 }
 
 /// The sign of W never matters: the same point with W negated (the parameter's numerator and
