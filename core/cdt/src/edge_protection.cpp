@@ -183,6 +183,24 @@ private:
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> heap_;
 };
 
+/// True when piece pq of input edge ab is shorter than 2^-kShellDepth of it: splits have
+/// converged on an end that far, which is how a cascade about an acute vertex shows. Halving two
+/// edges that meet at angle a stops only when their pieces there differ in length by less than a
+/// factor cos a; cheese's edges at 1.2 degrees (1 - cos a = 2e-4) have lengths in the ratio
+/// 1.057, which no number of halvings brings that near 1, and went to 2^-52. Concentric shells
+/// from the start made more points on organic meshes (pinion 444 -> 11140, the CDT bench's 81
+/// models 78950 -> 109013); past 2^-6 they changed seven models (78950 -> 79100), past 2^-12
+/// two (78950 -> 78943).
+constexpr int kShellDepth = 12;
+
+bool deep_piece(const Point3& p, const Point3& q, const Point3& a, const Point3& b) {
+    const auto length2 = [](const Point3& u, const Point3& v) {
+        const double dx = u.x - v.x, dy = u.y - v.y, dz = u.z - v.z;
+        return dx * dx + dy * dy + dz * dz;
+    };
+    return length2(p, q) < std::ldexp(length2(a, b), -2 * kShellDepth);
+}
+
 /// The live Delaunay triangulation that protect_edges inserts into, with the questions it asks
 /// by the PLC's point indices.
 class ProtectionMesh {
@@ -300,6 +318,12 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
     require_edges_meet_properly(plc, missing);
     ProtectionMesh mesh(std::move(dt));
     std::unordered_map<std::uint64_t, std::uint32_t> split_at;
+    std::vector<Edge> segment_of;  ///< by split point (index - inputs): the input edge it is on
+    const auto segment_of_piece = [&](const Edge& e) {
+        return e[0] >= inputs   ? segment_of[e[0] - inputs]
+               : e[1] >= inputs ? segment_of[e[1] - inputs]
+                                : e;
+    };
     ShortestFirst queue(plc.points.points);
     for (const Edge& e : missing) {
         queue.push(e);
@@ -340,14 +364,28 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
         // halving does not (Steiner points over the CDT bench's 74 models: 37347 -> 33722). The
         // sphere about a shared input vertex through the reference (concentric shells) made
         // more points than halving on the bench as well, pinion most (1966 against 445).
+        // A split point on another PLC edge through an input end c of a deep piece (an acute
+        // angle at c, where splits keep converging) aims it at a concentric shell about c.
         std::optional<Point3> reference;
+        std::optional<std::uint32_t> shell_centre;
+        const Edge segment = segment_of_piece(e);
+        const Point3 p = plc.points.points[e[0]];
+        const Point3 q = plc.points.points[e[1]];
         if (const auto w = mesh.reference(star_p, star_q, e[0], e[1]); w && *w >= inputs) {
             reference = plc.points.points[*w];
+            const Edge host = segment_of[*w - inputs];
+            for (const std::uint32_t c : e) {
+                if (c < inputs && (host[0] == c || host[1] == c) &&
+                    deep_piece(
+                        p, q, plc.points.points[segment[0]], plc.points.points[segment[1]])) {
+                    shell_centre = c;
+                }
+            }
         }
         const GenericPoint3 gp = generic_point(plc.points, e[0]);
         const GenericPoint3 gq = generic_point(plc.points, e[1]);
-        const SplitTarget target =
-            split_target(plc.points.points[e[0]], plc.points.points[e[1]], reference);
+        const SplitTarget target = shell_centre ? shell_target(p, q, *shell_centre == e[0])
+                                                : split_target(p, q, reference);
         const std::optional<GenericPoint3> m = split_point(gp, gq, target);
         if (!m) {
             throw Error(
@@ -367,6 +405,7 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
         mesh.insert(*m, rounded);
         result.inserted.push_back(id);
         split_at.emplace(edge_key(e[0], e[1]), id);
+        segment_of.push_back(segment);
         queue.push({e[0], id});
         queue.push({id, e[1]});
         pieces.push_back({e[0], id});

@@ -50,6 +50,9 @@ constexpr double kFreeingShare = 0.9;
 constexpr int kShortestBits = 10;
 constexpr double kShortWindow = 0x1p-11;
 
+/// How far from its sphere, relative to the radius, a split on a concentric shell may stand.
+constexpr double kShellTolerance = 0x1p-30;
+
 SplitTarget around(double t) {
     return {t, t - kDoubleWindow, t + kDoubleWindow};
 }
@@ -82,6 +85,16 @@ SplitTarget split_target(const Point3& p, const Point3& q, const std::optional<P
     }
     // A double point off the interval would leave w encroaching a piece: the search keeps to it.
     return {t, std::max(lo, t - kDoubleWindow), std::min(hi, t + kDoubleWindow)};
+}
+
+SplitTarget shell_target(const Point3& p, const Point3& q, bool about_p) {
+    const Point3 d = minus(q, p);
+    const double length = std::sqrt(dot(d, d));
+    const double radius = std::ldexp(1.0, std::ilogb(length * 2 / 3));
+    const double from_centre = radius / length;
+    const double margin = from_centre * kShellTolerance;
+    const double t = about_p ? from_centre : 1 - from_centre;
+    return {t, t - margin, t + margin};
 }
 
 std::optional<GenericPoint3> split_point(const GenericPoint3& p,

@@ -30,6 +30,17 @@ struct SplitTarget {
 /// whenever the aim falls outside [0.2, 0.8].
 SplitTarget split_target(const Point3& p, const Point3& q, const std::optional<Point3>& reference);
 
+/// Where a piece pq that ends at an input vertex c (p when `about_p`, else q) splits when a split
+/// point on another PLC edge through c encroaches upon it and earlier splits have already made the
+/// piece short (protect_edges decides): on the sphere about c whose radius is a
+/// power of two, the largest not above 2/3 |pq| (concentric shells, Cheng, Dey & Shewchuk §5.8).
+/// Pieces at c then have lengths of one power of two on every edge there, so that the new vertices
+/// stop encroaching upon each other's pieces, where an aim set by each encroacher in turn shrinks
+/// the pieces about c without end (cheese's fan of 28 edges). The window keeps the length within
+/// 2^-30 of the radius: pieces of equal length at an angle above about 0.004 degrees free each
+/// other.
+SplitTarget shell_target(const Point3& p, const Point3& q, bool about_p);
+
 /// A point exactly on the open piece pq (p, q as protect_edges made them: input points, double
 /// points on a segment, or SegmentParameterPoints of one base edge) near `target.target` of pq: a
 /// point with double coordinates in [target.lo, target.hi] when the ends are doubles and one is
