@@ -33,7 +33,8 @@ SplitTarget split_target(const Point3& p, const Point3& q, const std::optional<P
 /// Where a piece pq that ends at an input vertex c (p when `about_p`, else q) splits when a split
 /// point on another PLC edge through c encroaches upon it and earlier splits have already made the
 /// piece short (protect_edges decides): on the sphere about c whose radius is a
-/// power of two, the largest not above 2/3 |pq| (concentric shells, Cheng, Dey & Shewchuk §5.8).
+/// power of two, the largest not above 2/3 |pq| (concentric shells, as Ruppert's Delaunay
+/// refinement protects small input angles).
 /// Pieces at c then have lengths of one power of two on every edge there, so that the new vertices
 /// stop encroaching upon each other's pieces, where an aim set by each encroacher in turn shrinks
 /// the pieces about c without end (cheese's fan of 28 edges). The window keeps the length within
