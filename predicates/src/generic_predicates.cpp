@@ -11,6 +11,7 @@
 
 #include <boost/multiprecision/gmp.hpp>
 
+#include "cavity/predicates/dyadic.h"
 #include "cavity/predicates/generic_filter.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"
@@ -63,22 +64,9 @@ Interval identity_interval(double x) {
     return Interval(x);
 }
 
-/// The exponent k of the spacing of x's binade: x is an integer multiple of 2^k (x finite).
-int spacing_exponent(double x) {
-    return std::max(std::ilogb(x), -1022) - 52;
-}
-
 /// x * 2^-scale, an integer when x == 0 or scale <= spacing_exponent(x).
 Integer scaled(double x, int scale) {
-    if (x == 0.0) {
-        return Integer(0);
-    }
-    const int k = spacing_exponent(x);
-    // Shifted in place: `mantissa << shift` made a second integer, and copying and freeing it
-    // was a fifth of this function's cost in the exact stage of a protected CDT.
-    Integer result(static_cast<long long>(std::ldexp(x, -k)));  // |mantissa| < 2^53
-    result <<= static_cast<unsigned>(k - scale);
-    return result;
+    return scaled_to_integer<Integer>(x, scale);
 }
 
 /// Calls f on every coordinate of every point defining g.

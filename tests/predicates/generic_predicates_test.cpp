@@ -360,21 +360,26 @@ TEST(GenericPredicates, ExactZerosOnDegenerateConfigurations) {
     EXPECT_GT(sphere.zeros, 0u);
 }
 
+/// Moves one defining double of `target` (a random coordinate of a random defining point) by
+/// 1-4 ulps.
+void nudge_defining_double(Source& s, GenericPoint3& target) {
+    Point3* p = std::get_if<Point3>(&target);
+    if (auto* seg = std::get_if<SegmentParameterPoint>(&target)) {
+        p = s.integer(0, 1) == 0 ? &seg->a : &seg->b;
+    } else if (auto* l = std::get_if<LinePlanePoint>(&target)) {
+        p = std::array<Point3*, 5>{&l->a, &l->b, &l->p, &l->q, &l->r}[s.integer(0, 4)];
+    }
+    double& v = std::array<double*, 3>{&p->x, &p->y, &p->z}[s.integer(0, 2)][0];
+    v = s.nudged(v);
+}
+
 /// The degenerate configurations with one defining double moved by 1-4 ulps: nonzero, tiny
 /// determinants that the filter must leave to the exact stage.
 TEST(GenericPredicates, AgreeWithTheOracleNearDegeneracies) {
     Source s(151515);
     Tally orient, sphere;
     const auto nudge = [&](std::array<GenericPoint3, 5>& g) {
-        GenericPoint3& target = g[static_cast<std::size_t>(s.integer(0, 4))];
-        Point3* p = std::get_if<Point3>(&target);
-        if (auto* seg = std::get_if<SegmentParameterPoint>(&target)) {
-            p = s.integer(0, 1) == 0 ? &seg->a : &seg->b;
-        } else if (auto* l = std::get_if<LinePlanePoint>(&target)) {
-            p = std::array<Point3*, 5>{&l->a, &l->b, &l->p, &l->q, &l->r}[s.integer(0, 4)];
-        }
-        double& v = std::array<double*, 3>{&p->x, &p->y, &p->z}[s.integer(0, 2)][0];
-        v = s.nudged(v);
+        nudge_defining_double(s, g[static_cast<std::size_t>(s.integer(0, 4))]);
     };
     for (const int scale : {-1070, -30, 0, 30, 960}) {
         for (std::size_t n = 0; n < queries() / 4; ++n) {
@@ -472,14 +477,7 @@ TEST(GenericPredicates, CoplanarAndCollinearMixesAgreeWithTheOracle) {
             sphere.check(insphere_staged(g[0], g[1], g[2], g[3], g[4]), oracle_insphere(g), g, 5);
             // One defining double moved: mostly off the plane, a tiny nonzero determinant.
             GenericPoint3& target = g[static_cast<std::size_t>(s.integer(0, 3))];
-            Point3* x = std::get_if<Point3>(&target);
-            if (auto* seg = std::get_if<SegmentParameterPoint>(&target)) {
-                x = s.integer(0, 1) == 0 ? &seg->a : &seg->b;
-            } else if (auto* l = std::get_if<LinePlanePoint>(&target)) {
-                x = std::array<Point3*, 5>{&l->a, &l->b, &l->p, &l->q, &l->r}[s.integer(0, 4)];
-            }
-            double& v = std::array<double*, 3>{&x->x, &x->y, &x->z}[s.integer(0, 2)][0];
-            v = s.nudged(v);
+            nudge_defining_double(s, target);
             if (const auto* l = std::get_if<LinePlanePoint>(&target);
                 l != nullptr && !line_plane_point(l->a, l->b, l->p, l->q, l->r)) {
                 continue;  // the move lost the intersection: no point for the oracle

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "cavity/predicates/dyadic.h"
 #include "cavity/predicates/generic_predicates.h"
 #include "cavity/predicates/orient3d.h"
 
@@ -217,10 +218,7 @@ namespace {
 
 using Integer = boost::multiprecision::mpz_int;
 
-/// The exponent of the spacing of x's binade: x is an integer multiple of 2^k (x finite).
-int spacing_exponent(double x) {
-    return std::max(std::ilogb(x), -1022) - 52;
-}
+using predicates::spacing_exponent;
 
 /// The least spacing exponent of the nonzero values (INT_MAX when all are zero): each of them is
 /// an integer multiple of 2^result.
@@ -237,13 +235,7 @@ int common_spacing(const std::array<double, N>& values) {
 
 /// x * 2^-scale, an integer when scale <= spacing_exponent(x) (or x == 0).
 Integer scaled(double x, int scale) {
-    if (x == 0.0) {
-        return Integer(0);
-    }
-    const int k = spacing_exponent(x);
-    Integer result(static_cast<long long>(std::ldexp(x, -k)));  // |mantissa| < 2^53
-    result <<= static_cast<unsigned>(k - scale);
-    return result;
+    return predicates::scaled_to_integer<Integer>(x, scale);
 }
 
 /// numerator * 2^scale / denominator (denominator != 0), reduced once.
