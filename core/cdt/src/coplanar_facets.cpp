@@ -267,11 +267,12 @@ CoplanarMerge merge_coplanar_facets(Plc& plc) {
         while (j < sides.size() && sides[j].first == sides[i].first) {
             ++j;
         }
-        const std::uint32_t f = sides[i].second;
-        const std::uint32_t g = sides[i + 1 < j ? i + 1 : i].second;
-        if (j - i == 2 && f != g && plc.facets[f].marker == plc.facets[g].marker &&
-            coplanar(f, g)) {
-            groups.unite(f, g);
+        if (j - i == 2) {
+            const std::uint32_t f = sides[i].second;
+            const std::uint32_t g = sides[i + 1].second;
+            if (f != g && plc.facets[f].marker == plc.facets[g].marker && coplanar(f, g)) {
+                groups.unite(f, g);
+            }
         }
         i = j;
     }

@@ -124,9 +124,9 @@ const FacetGeometry::Placed& FacetGeometry::placed(VertexId v) {
 }
 
 int FacetGeometry::side(VertexId v) {
-    auto it = sides_of_.find(v);
-    if (it == sides_of_.end()) {
-        it = sides_of_.emplace(v, predicates::to_int(plane_.side(geometry_.generic(v)))).first;
+    auto it = vertex_sides_.find(v);
+    if (it == vertex_sides_.end()) {
+        it = vertex_sides_.emplace(v, predicates::to_int(plane_.side(geometry_.generic(v)))).first;
     }
     return it->second;
 }

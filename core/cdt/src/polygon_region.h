@@ -94,7 +94,7 @@ private:
     const Placed& placed(VertexId v);
 
     /// side(v) by the exact orient3d predicate, whose filters decide most signs in doubles.
-    std::unordered_map<VertexId, int> sides_of_;
+    std::unordered_map<VertexId, int> vertex_sides_;
     std::map<VertexId, Placed> placed_;
     /// A triangle without hole points: a left-right edge crosses it when it turns the same way
     /// around its three sides (three orientations, crosses_facet_region), no crossing point needed.
