@@ -11,8 +11,9 @@
 
 namespace cavity::core {
 
-/// Replaces each one-loop facet whose corners are not exactly coplanar by the triangles ear
-/// clipping cuts it into, in the projection along the largest component of its Newell normal;
+/// Replaces each one-loop facet whose corners are not exactly coplanar by triangles of its corners,
+/// in the projection along the largest component of its Newell normal: the triangulation with the
+/// shortest diagonals in total (ear clipping's for loops over kMinimumWeightCorners corners);
 /// every triangle keeps the face's number, line and marker, so defects are still named as the
 /// file numbers its faces. A face whose projection is no simple polygon is left whole (the surface
 /// check reports it as degenerate). Returns how many faces were cut.
