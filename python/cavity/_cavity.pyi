@@ -72,4 +72,5 @@ class CDT:
 def cdt(points: npt.ArrayLike, polygons: Any, *, segments: Optional[npt.ArrayLike] = None,
         markers: Optional[npt.ArrayLike] = None, regions: Optional[npt.ArrayLike] = None,
         holes: Optional[npt.ArrayLike] = None, convex_hull: bool = False,
-        protect: bool = False, max_protection_points: int = 100000) -> CDT: ...
+        protect: bool = False, max_protection_points: int = 100000,
+        surface: bool = False, keep_faces: bool = False) -> CDT: ...

@@ -19,6 +19,7 @@
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/cdt_carve.h"
 #include "cavity/core/cdt/cdt_regions.h"
+#include "cavity/core/cdt/read_plc.h"
 #include "cavity/core/input/plc.h"
 #include "cavity/predicates/orient3d.h"
 #include "input_arrays.h"
@@ -401,17 +402,29 @@ std::pair<std::size_t, std::string> hole_refused(const core::Cdt& cdt) {
     return {cdt.plc.volume_holes.size(), {}};
 }
 
+/// How the polygons are read: as a .poly file's facets, or as a surface mesh file's faces.
+struct Reading {
+    bool surface = false;
+    bool merge_coplanar_faces = true;  ///< with `surface`
+};
+
 /// Everything one CDT produces, computed without the GIL.
 struct Built {
+    core::SurfaceReading surface;
     core::Cdt cdt;
     core::CarvedCdt domain;
 };
 
-Built build(core::Plc plc, const core::CdtOptions& options, bool convex_hull) {
-    for (std::size_t f = 0; f < plc.facets.size(); ++f) {
-        check_facet_geometry(plc, f);
-    }
+Built build(core::Plc plc, const core::CdtOptions& options, bool convex_hull, Reading reading) {
     Built b;
+    if (reading.surface) {
+        // The surface check names degenerate faces (collinear corners, not flat) itself.
+        b.surface = core::prepare_surface_mesh(plc, reading.merge_coplanar_faces);
+    } else {
+        for (std::size_t f = 0; f < plc.facets.size(); ++f) {
+            check_facet_geometry(plc, f);
+        }
+    }
     try {
         // build_cdt validates its result exactly (validate_cdt) before returning it.
         b.cdt = core::build_cdt(std::move(plc), options);
@@ -445,13 +458,17 @@ Built build(core::Plc plc, const core::CdtOptions& options, bool convex_hull) {
 
 class Cdt {
 public:
-    Cdt(core::Plc plc, const core::CdtOptions& options, bool with_regions, bool convex_hull) {
+    Cdt(core::Plc plc,
+        const core::CdtOptions& options,
+        bool with_regions,
+        bool convex_hull,
+        Reading reading) {
         const std::size_t polygons = plc.facets.size();
         const std::size_t input_points = plc.points.size();
         Built b;
         {
             py::gil_scoped_release nogil;
-            b = build(std::move(plc), options, convex_hull);
+            b = build(std::move(plc), options, convex_hull, reading);
         }
         core::Cdt& cdt = b.cdt;
         const auto n = static_cast<py::ssize_t>(cdt.plc.points.size());
@@ -472,6 +489,9 @@ public:
         stats["protection_points"] = cdt.protection.inserted.size();
         stats["protection_rounds"] = cdt.protection.rounds;
         stats["polygons"] = polygons;
+        stats["warped_faces"] = b.surface.warped_faces;
+        stats["merged_faces"] = b.surface.merged_faces;
+        stats["merged_polygons"] = b.surface.merged_polygons;
         stats["tets"] = b.domain.tets.size();
         stats["removed_tets"] = b.domain.removed;
         stats["faces"] = cdt.faces.size();
@@ -549,7 +569,12 @@ Cdt make_cdt(const py::handle& points,
              const py::handle& holes,
              bool convex_hull,
              bool protect,
-             std::size_t max_protection_points) {
+             std::size_t max_protection_points,
+             bool surface,
+             bool keep_faces) {
+    if (keep_faces && !surface) {
+        throw py::value_error("keep_faces=True applies to surface=True only");
+    }
     core::Plc plc;
     plc.points = to_point_set(points, py::none());
     // Core prefixes messages with a non-empty source, as it does with a file name.
@@ -564,6 +589,19 @@ Cdt make_cdt(const py::handle& points,
     plc.facets = facets_of(polygons, n);
     set_markers(markers, plc.facets);
     plc.segments = segments_of(segments, n);
+    if (surface) {
+        if (!plc.segments.empty()) {
+            throw py::value_error("surface=True takes no segments: a surface mesh is its faces");
+        }
+        for (std::size_t f = 0; f < plc.facets.size(); ++f) {
+            if (plc.facets[f].loops.size() != 1 || !plc.facets[f].holes.empty()) {
+                throw py::value_error(polygon_name(f) +
+                                      ": with surface=True each polygon is one loop, a face of "
+                                      "the surface mesh");
+            }
+            plc.facets[f].number = f;  // the surface check names faces by their row
+        }
+    }
     if (!regions.is_none()) {
         plc.regions = regions_of(regions);
     }
@@ -573,7 +611,8 @@ Cdt make_cdt(const py::handle& points,
     return Cdt(std::move(plc),
                core::CdtOptions{protect, max_protection_points},
                !regions.is_none(),
-               convex_hull);
+               convex_hull,
+               Reading{surface, !keep_faces});
 }
 
 }  // namespace
@@ -604,7 +643,7 @@ region_markers : (m,) int32 or None
     With ``regions``: the marker of the region holding each tetrahedron, 0 for none.
 stats : dict
     Counts of the construction: points, input_points, protection_points, protection_rounds,
-    polygons, tets (kept), removed_tets (carved away), faces, flips_23, flips_32, flips_44, events_queued, events_stale,
+    polygons, warped_faces, merged_faces, merged_polygons (surface=True), tets (kept), removed_tets (carved away), faces, flips_23, flips_32, flips_44, events_queued, events_stale,
     events_held, region_tets, region_vertices, max_region_vertices, rotary_steps,
     search_visited, certify_calls.
 npoints, nsimplex : int
@@ -648,6 +687,8 @@ data "region" when regions were given. Raises ImportError when meshio is not ins
           py::arg("convex_hull") = false,
           py::arg("protect") = false,
           py::arg("max_protection_points") = 100000,
+          py::arg("surface") = false,
+          py::arg("keep_faces") = false,
           R"doc(
 Constrained Delaunay tetrahedralization (CDT) of a piecewise linear complex (PLC).
 
@@ -692,6 +733,17 @@ protect : bool
     coordinates), until the PLC is edge-protected. Off: such a PLC is refused, naming the edges.
 max_protection_points : int
     The most protecting points protect=True may add before giving up.
+surface : bool
+    The polygons are the faces of a closed surface mesh, one loop each (no segments), read as
+    ``cavity cdt`` reads an .off/.stl/.obj/.ply file: a face whose corners are not exactly
+    coplanar is cut into the triangles with the shortest diagonals; the surface must bound a
+    solid (every side in exactly two faces, no degenerate or intersecting faces), else the
+    ValueError names the faces ("facet i" is polygon i) and points; then each group of exactly
+    coplanar faces joined by their sides, with one marker, is merged into one polygon (with
+    holes), as TetGen does without -M: their shared sides are no constraints and need no
+    protecting points. ``stats`` counts warped_faces, merged_faces and merged_polygons.
+keep_faces : bool
+    With surface=True: merge no faces (TetGen's -M), each face stays a polygon of its own.
 
 Returns
 -------

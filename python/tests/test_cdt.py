@@ -533,3 +533,75 @@ def test_poly_fixture_same_mesh_as_the_cli(poly_cdt, tmp_path):
     # The file numbers from 0, as the .poly does; same tetrahedra, same orientation.
     assert np.array_equal(ele[:, 1:5], c.simplices)
     assert np.array_equal(face[:, 1:4], c.faces) and np.array_equal(face[:, 4], c.face_markers)
+
+
+def l_prism_triangles():
+    """The L prism of L_SHAPE as a triangle surface mesh: each cap a fan of 4 triangles from corner
+    0, each side 2 triangles; outward."""
+    points, polygons = prism(L_SHAPE)
+    bottom = [[0, i + 1, i] for i in range(1, 5)]
+    top = [[6, 6 + i, 6 + i + 1] for i in range(1, 5)]
+    sides = [t for q in polygons[2:] for t in ([q[0], q[1], q[2]], [q[0], q[2], q[3]])]
+    return points, bottom + top + sides
+
+
+def write_off(path, points, faces):
+    rows = [f"{x!r} {y!r} {z!r}" for x, y, z in points] + [
+        f"{len(f)} " + " ".join(map(str, f)) for f in faces]
+    path.write_text(f"OFF\n{len(points)} {len(faces)} 0\n" + "\n".join(rows) + "\n")
+
+
+@pytest.mark.parametrize("keep_faces", [False, True], ids=["merged", "kept"])
+def test_surface_mesh_is_read_as_the_cli_reads_it(keep_faces, tmp_path):
+    points, triangles = l_prism_triangles()
+    c = cavity.cdt(points, triangles, surface=True, keep_faces=keep_faces, protect=True)
+    assert_positive(c)
+    assert volumes(c).sum() == pytest.approx(0.75, abs=1e-15)
+    # 20 faces on 8 flat sides (TetGen without -M); with keep_faces each face stays a polygon.
+    assert c.stats["warped_faces"] == 0
+    assert c.stats["merged_faces"] == (0 if keep_faces else 20)
+    assert c.stats["merged_polygons"] == (0 if keep_faces else 8)
+    executable = cavity_executable()
+    if executable is None:
+        pytest.skip("no `cavity` program (set CAVITY_EXECUTABLE)")
+    off = tmp_path / "l.off"
+    write_off(off, points, triangles)
+    prefix = tmp_path / "out"
+    subprocess.run([executable, "cdt", str(off), "-o", str(prefix), "--protect", "--quiet"]
+                   + (["--keep-faces"] if keep_faces else []), check=True)
+    ele = np.loadtxt(f"{prefix}.ele", skiprows=1, dtype=np.int64, comments="#")
+    node = np.loadtxt(f"{prefix}.node", skiprows=1, comments="#")
+    assert np.array_equal(node[:, 1:4], c.points)
+    assert np.array_equal(ele[:, 1:5], c.simplices)
+
+
+def test_surface_mesh_warped_face_is_cut():
+    # Corner 7 (1, 1, 1) lifted 2^-40: of its faces only the top z = 1 is no longer flat.
+    points = CUBE.copy()
+    points[7, 2] += 2.0**-40
+    c = cavity.cdt(points, CUBE_QUADS, surface=True, protect=True)
+    assert c.stats["warped_faces"] == 1
+    assert_positive(c)
+    assert volumes(c).sum() == pytest.approx(1, abs=1e-12)
+
+
+def test_surface_mesh_defects_are_named():
+    # One triangle missing: its three sides are open, each a side of one face only.
+    named = r"3 open edges .*\n +edge 1-3: only facet 0\n +edge 1-7: only facet 10"
+    with pytest.raises(ValueError, match=named):
+        cavity.cdt(CUBE, CUBE_TRIANGLES[:-1], surface=True)
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({"keep_faces": True}, "keep_faces=True applies to surface=True only"),
+    ({"surface": True, "segments": [[0, 7]]}, "surface=True takes no segments"),
+])
+def test_surface_keyword_errors(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        cavity.cdt(CUBE, CUBE_QUADS, **kwargs)
+
+
+def test_surface_mesh_polygon_with_two_loops_is_refused():
+    points, polygons = box_with_window(lambda outer, inner: [outer, inner])
+    with pytest.raises(ValueError, match="polygon 5: with surface=True each polygon is one loop"):
+        cavity.cdt(points, polygons, surface=True)

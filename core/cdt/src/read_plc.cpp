@@ -8,13 +8,7 @@
 
 namespace cavity::core {
 
-Plc read_plc(const std::filesystem::path& file,
-             SurfaceReading* reading,
-             bool merge_coplanar_faces) {
-    if (!is_surface_mesh_file(file)) {
-        return read_poly(file);
-    }
-    Plc plc = read_surface_mesh(file);
+SurfaceReading prepare_surface_mesh(Plc& plc, bool merge_coplanar_faces) {
     SurfaceReading made;
     made.warped_faces = split_warped_facets(plc);
     // Checked face by face, before merging: the defects are named by the file's faces.
@@ -24,6 +18,17 @@ Plc read_plc(const std::filesystem::path& file,
         made.merged_faces = merge.faces;
         made.merged_polygons = merge.polygons;
     }
+    return made;
+}
+
+Plc read_plc(const std::filesystem::path& file,
+             SurfaceReading* reading,
+             bool merge_coplanar_faces) {
+    if (!is_surface_mesh_file(file)) {
+        return read_poly(file);
+    }
+    Plc plc = read_surface_mesh(file);
+    const SurfaceReading made = prepare_surface_mesh(plc, merge_coplanar_faces);
     if (reading != nullptr) {
         *reading = made;
     }

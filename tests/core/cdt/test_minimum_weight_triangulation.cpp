@@ -70,7 +70,8 @@ struct Cut {
     std::optional<std::vector<Triangle>> triangles;
 };
 
-/// The polygon in the plane z = 0 (corner k at index k), cut with axis z dropped, counter-clockwise.
+/// The polygon in the plane z = 0 (corner k at index k), cut with axis z dropped,
+/// counter-clockwise.
 Cut cut(const Polygon& p) {
     Cut c;
     for (std::size_t k = 0; k < p.size(); ++k) {

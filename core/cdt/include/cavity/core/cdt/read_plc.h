@@ -27,4 +27,11 @@ Plc read_plc(const std::filesystem::path& file,
              SurfaceReading* reading = nullptr,
              bool merge_coplanar_faces = true);
 
+/// What read_plc does to a surface mesh once its faces are read, for faces made in memory (each
+/// facet one loop; facet_name names them in messages): warped faces cut into triangles, the
+/// surface checked (require_valid_surface), then, unless `merge_coplanar_faces` is false, exactly
+/// coplanar neighbouring faces merged into polygons. Returns how many faces were cut and merged.
+/// \throws Error naming the defects of a surface that does not bound a solid.
+SurfaceReading prepare_surface_mesh(Plc& plc, bool merge_coplanar_faces = true);
+
 }  // namespace cavity::core
