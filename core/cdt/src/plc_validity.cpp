@@ -197,12 +197,33 @@ std::vector<std::string> edge_violations(const Plc& plc,
         return std::to_string(e[0] + base) + "-" + std::to_string(e[1] + base);
     };
     const std::vector<Edge> all = plc_edges(plc);
-    for (const Edge& e : edges) {
+    // Candidates come from grids of the points' and the edges' boxes, in index order (the order
+    // of the messages): testing each edge against every point and edge was quadratic, and the
+    // largest part of edge protection's checks on surface meshes.
+    Box bounds;
+    std::vector<Box> point_boxes;
+    point_boxes.reserve(pts.size());
+    for (std::uint32_t v = 0; v < pts.size(); ++v) {
+        bounds.add(pts[v]);
+        point_boxes.push_back(box_of(v, v));
+    }
+    std::vector<Box> edge_boxes;
+    edge_boxes.reserve(all.size());
+    for (const Edge& f : all) {
+        edge_boxes.push_back(box_of(f[0], f[1]));
+    }
+    BoxGrid point_grid(bounds, point_boxes);
+    BoxGrid edge_grid(bounds, edge_boxes);
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        const Edge& e = edges[k];
         const Box box = box_of(e[0], e[1]);
         const ExactPoint a = exact_point(plc.points, e[0]);
         const ExactPoint b = exact_point(plc.points, e[1]);
-        for (std::uint32_t v = 0; v < pts.size(); ++v) {
-            if (v != e[0] && v != e[1] && box.meets(box_of(v, v)) &&
+        std::vector<std::size_t> near_points = point_grid.near(box, k);
+        std::sort(near_points.begin(), near_points.end());
+        for (const std::size_t i : near_points) {
+            const auto v = static_cast<std::uint32_t>(i);
+            if (v != e[0] && v != e[1] && box.meets(point_boxes[v]) &&
                 inside_segment(a, b, exact_point(plc.points, v))) {
                 out.push_back(located_message(
                     plc.source,
@@ -210,9 +231,12 @@ std::vector<std::string> edge_violations(const Plc& plc,
                     "point " + std::to_string(v + base) + " lies inside edge " + ids(e)));
             }
         }
-        for (const Edge& f : all) {
+        std::vector<std::size_t> near_edges = edge_grid.near(box, k);
+        std::sort(near_edges.begin(), near_edges.end());
+        for (const std::size_t i : near_edges) {
+            const Edge& f = all[i];
             if (f[0] == e[0] || f[0] == e[1] || f[1] == e[0] || f[1] == e[1] ||
-                !box.meets(box_of(f[0], f[1]))) {
+                !box.meets(edge_boxes[i])) {
                 continue;
             }
             if (segments_cross(
