@@ -249,6 +249,28 @@ public:
                                 std::to_string(key));
         }
         vertex_.push_back(static_cast<VertexId>(dt_.geometry().size() - 1));
+        // An edge that the insertion removed was an edge of a tetrahedron in conflict with the
+        // new point, and every vertex of those is a neighbour of the new point afterwards (the
+        // triangulation is Delaunay before and after, and no vertex leaves it).
+        ++insertions_;
+        touched_.resize(vertex_.size(), 0);
+        const Geometry& g = dt_.geometry();
+        for (TetId t : star(key)) {
+            for (VertexId w : dt_.storage().vertices(t)) {
+                if (w != kGhostVertex) {
+                    touched_[g.key(w)] = insertions_;
+                }
+            }
+        }
+    }
+
+    /// The number of insertions so far.
+    std::uint64_t insertions() const { return insertions_; }
+
+    /// False when no insertion after the first `since` had both p and q as neighbours of its
+    /// point: then none removed edge pq, if it was there.
+    bool maybe_removed(std::uint32_t p, std::uint32_t q, std::uint64_t since) const {
+        return touched(p) > since && touched(q) > since;
     }
 
     DelaunayTriangulation release() && { return std::move(dt_); }
@@ -295,6 +317,11 @@ private:
     std::vector<VertexId> vertex_;      ///< by point index
     std::vector<std::uint64_t> found_;  ///< by tetrahedron: the last star search that found it
     std::uint64_t search_ = 0;
+    /// By point index: the number of the last insertion (from 1) whose point it neighbours.
+    std::vector<std::uint64_t> touched_;
+    std::uint64_t insertions_ = 0;
+
+    std::uint64_t touched(std::uint32_t i) const { return i < touched_.size() ? touched_[i] : 0; }
 };
 
 }  // namespace
@@ -329,16 +356,22 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
         queue.push(e);
     }
     // Every piece made so far: a later split can take a protected piece out of the triangulation
-    // again, so each pass ends by checking them all.
+    // again, so each pass ends by checking them all. Each piece not split was seen in the
+    // triangulation after the previous pass began (in that pass, or when it was popped later):
+    // only an insertion since then that neighbours both its ends can have removed it, and the
+    // others need no star search (homer: 291223 searches, most of them in these passes).
     std::vector<Edge> pieces = plc_edges(plc);
+    std::uint64_t previous_pass = 0;
     const auto recheck = [&](ShortestFirst& out) {
         ++result.rounds;
         for (const Edge& e : pieces) {
             if (!split_at.contains(edge_key(e[0], e[1])) &&
+                mesh.maybe_removed(e[0], e[1], previous_pass) &&
                 !mesh.has_vertex(mesh.star(e[0]), e[1])) {
                 out.push(e);
             }
         }
+        previous_pass = mesh.insertions();
     };
     while (!queue.empty()) {
         const Edge e = queue.pop();
