@@ -9,6 +9,7 @@
 #include "box_grid.h"
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/edge_protection.h"
+#include "cavity/predicates/generic_predicates.h"
 #include "exact_plane.h"
 
 namespace cavity::core {
@@ -214,16 +215,33 @@ std::vector<std::string> edge_violations(const Plc& plc,
     }
     BoxGrid point_grid(bounds, point_boxes);
     BoxGrid edge_grid(bounds, edge_boxes);
+    // Exact orientations settle most candidates without rationals: four points that are not
+    // coplanar are no two crossing segments, and a point off the plane of a, b and some other
+    // point is off line ab. Two corners of the bounding box serve as those other points; when
+    // both lie in the plane (or orient3d is zero for any reason) the rationals decide.
+    using predicates::GenericPoint3;
+    using predicates::Sign;
+    const std::array<GenericPoint3, 2> witnesses{
+        GenericPoint3(Point3{bounds.lo[0], bounds.lo[1], bounds.hi[2]}),
+        GenericPoint3(Point3{bounds.hi[0], bounds.lo[1], bounds.lo[2]})};
+    const auto off_line = [&](const GenericPoint3& a, const GenericPoint3& b, std::uint32_t v) {
+        const GenericPoint3 p = generic_point(plc.points, v);
+        return std::any_of(witnesses.begin(), witnesses.end(), [&](const GenericPoint3& x) {
+            return predicates::orient3d(a, b, p, x) != Sign::kZero;
+        });
+    };
     for (std::size_t k = 0; k < edges.size(); ++k) {
         const Edge& e = edges[k];
         const Box box = box_of(e[0], e[1]);
+        const GenericPoint3 ga = generic_point(plc.points, e[0]);
+        const GenericPoint3 gb = generic_point(plc.points, e[1]);
         const ExactPoint a = exact_point(plc.points, e[0]);
         const ExactPoint b = exact_point(plc.points, e[1]);
         std::vector<std::size_t> near_points = point_grid.near(box, k);
         std::sort(near_points.begin(), near_points.end());
         for (const std::size_t i : near_points) {
             const auto v = static_cast<std::uint32_t>(i);
-            if (v != e[0] && v != e[1] && box.meets(point_boxes[v]) &&
+            if (v != e[0] && v != e[1] && box.meets(point_boxes[v]) && !off_line(ga, gb, v) &&
                 inside_segment(a, b, exact_point(plc.points, v))) {
                 out.push_back(located_message(
                     plc.source,
@@ -236,7 +254,10 @@ std::vector<std::string> edge_violations(const Plc& plc,
         for (const std::size_t i : near_edges) {
             const Edge& f = all[i];
             if (f[0] == e[0] || f[0] == e[1] || f[1] == e[0] || f[1] == e[1] ||
-                !box.meets(edge_boxes[i])) {
+                !box.meets(edge_boxes[i]) ||
+                predicates::orient3d(
+                    ga, gb, generic_point(plc.points, f[0]), generic_point(plc.points, f[1])) !=
+                    Sign::kZero) {
                 continue;
             }
             if (segments_cross(
