@@ -229,16 +229,40 @@ public:
         });
     }
 
-    /// True when point j is a vertex of one of the tetrahedra `star`.
-    bool has_vertex(const std::vector<TetId>& star, std::uint32_t j) const {
+    /// star(i), or nullopt when point j is a vertex of one of its tetrahedra (ij is an edge): the
+    /// search stops at the first such tetrahedron, where most pieces asked about are edges. The
+    /// same breadth-first search as vertex_star, so a star returned is in star(i)'s order.
+    std::optional<std::vector<TetId>> star_unless_edge(std::uint32_t i, std::uint32_t j) {
+        const ArrayStorage& storage = dt_.storage();
+        const VertexId v = vertex_[i];
         const VertexId w = vertex_[j];
-        for (TetId t : star) {
-            const TetVertices& v = dt_.storage().vertices(t);
-            if (std::find(v.begin(), v.end(), w) != v.end()) {
-                return true;
+        if (found_.size() < storage.capacity()) {
+            found_.resize(storage.capacity(), 0);
+        }
+        ++search_;
+        std::vector<TetId> star;
+        const TetId start = storage.tet_at_vertex(v);
+        if (start == kNoTet) {
+            return star;
+        }
+        found_[start] = search_;
+        star.push_back(start);
+        for (std::size_t k = 0; k < star.size(); ++k) {
+            const TetVertices& x = storage.vertices(star[k]);
+            if (std::find(x.begin(), x.end(), w) != x.end()) {
+                return std::nullopt;
+            }
+            for (int f = 0; f < 4; ++f) {
+                if (x[static_cast<std::size_t>(f)] == v) {
+                    continue;  // the facet opposite v leaves the star
+                }
+                const HalfFacet h = storage.adjacent(star[k], f);
+                if (h != kNoHalfFacet && std::exchange(found_[tet_of(h)], search_) != search_) {
+                    star.push_back(tet_of(h));
+                }
             }
         }
-        return false;
+        return star;
     }
 
     /// Inserts the point with index point_count(), exactly `exact`, rounded `rounded`.
@@ -249,6 +273,57 @@ public:
                                 std::to_string(key));
         }
         vertex_.push_back(static_cast<VertexId>(dt_.geometry().size() - 1));
+        // An edge that the insertion removed was an edge of a tetrahedron in conflict with the
+        // new point, and every vertex of those is a neighbour of the new point afterwards (the
+        // triangulation is Delaunay before and after, and no vertex leaves it); the new point is
+        // no end of it.
+        ++insertions_;
+        neighbour_of_.resize(vertex_.size());
+        const Geometry& g = dt_.geometry();
+        for (TetId t : star(key)) {
+            for (VertexId w : dt_.storage().vertices(t)) {
+                if (w == kGhostVertex || w == vertex_[key]) {
+                    continue;
+                }
+                std::vector<std::uint64_t>& list = neighbour_of_[g.key(w)];
+                if (list.empty()) {
+                    listed_.push_back(g.key(w));
+                }
+                if (list.empty() || list.back() != insertions_) {
+                    list.push_back(insertions_);
+                }
+            }
+        }
+    }
+
+    /// False when no insertion since the last forget_insertions() had both p and q as neighbours
+    /// of its point: then none removed edge pq, if it was there.
+    bool maybe_removed(std::uint32_t p, std::uint32_t q) const {
+        if (p >= neighbour_of_.size() || q >= neighbour_of_.size()) {
+            return false;
+        }
+        const std::vector<std::uint64_t>& a = neighbour_of_[p];
+        const std::vector<std::uint64_t>& b = neighbour_of_[q];
+        // Both lists are increasing: a merge finds a common insertion.
+        for (std::size_t i = 0, j = 0; i < a.size() && j < b.size();) {
+            if (a[i] == b[j]) {
+                return true;
+            }
+            if (a[i] < b[j]) {
+                ++i;
+            } else {
+                ++j;
+            }
+        }
+        return false;
+    }
+
+    /// Starts maybe_removed afresh from the insertions after this call.
+    void forget_insertions() {
+        for (const std::uint32_t i : listed_) {
+            neighbour_of_[i].clear();
+        }
+        listed_.clear();
     }
 
     DelaunayTriangulation release() && { return std::move(dt_); }
@@ -295,6 +370,11 @@ private:
     std::vector<VertexId> vertex_;      ///< by point index
     std::vector<std::uint64_t> found_;  ///< by tetrahedron: the last star search that found it
     std::uint64_t search_ = 0;
+    /// By point index: the insertions (numbered from 1) since the last forget_insertions() whose
+    /// point it neighbours, in order; listed_ holds the indices whose list is not empty.
+    std::vector<std::vector<std::uint64_t>> neighbour_of_;
+    std::vector<std::uint32_t> listed_;
+    std::uint64_t insertions_ = 0;
 };
 
 }  // namespace
@@ -329,21 +409,25 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
         queue.push(e);
     }
     // Every piece made so far: a later split can take a protected piece out of the triangulation
-    // again, so each pass ends by checking them all.
+    // again, so each pass ends by checking them all. Each piece not split was seen in the
+    // triangulation after the previous pass began (in that pass, or when it was popped later):
+    // only an insertion since then whose point neighbours both its ends can have removed it, and
+    // the others need no star search (homer: 291223 searches, most of them in these passes).
     std::vector<Edge> pieces = plc_edges(plc);
     const auto recheck = [&](ShortestFirst& out) {
         ++result.rounds;
         for (const Edge& e : pieces) {
-            if (!split_at.contains(edge_key(e[0], e[1])) &&
-                !mesh.has_vertex(mesh.star(e[0]), e[1])) {
+            if (!split_at.contains(edge_key(e[0], e[1])) && mesh.maybe_removed(e[0], e[1]) &&
+                mesh.star_unless_edge(e[0], e[1])) {
                 out.push(e);
             }
         }
+        mesh.forget_insertions();
     };
     while (!queue.empty()) {
         const Edge e = queue.pop();
-        const std::vector<TetId> star_p = mesh.star(e[0]);
-        if (mesh.has_vertex(star_p, e[1])) {
+        const std::optional<std::vector<TetId>> star_p = mesh.star_unless_edge(e[0], e[1]);
+        if (!star_p) {
             if (queue.empty()) {
                 recheck(queue);
             }
@@ -371,7 +455,7 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
         const Edge segment = segment_of_piece(e);
         const Point3 p = plc.points.points[e[0]];
         const Point3 q = plc.points.points[e[1]];
-        if (const auto w = mesh.reference(star_p, star_q, e[0], e[1]); w && *w >= inputs) {
+        if (const auto w = mesh.reference(*star_p, star_q, e[0], e[1]); w && *w >= inputs) {
             reference = plc.points.points[*w];
             const Edge host = segment_of[*w - inputs];
             for (const std::uint32_t c : e) {

@@ -9,6 +9,7 @@
 #include "box_grid.h"
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/edge_protection.h"
+#include "cavity/predicates/generic_predicates.h"
 #include "exact_plane.h"
 
 namespace cavity::core {
@@ -197,12 +198,50 @@ std::vector<std::string> edge_violations(const Plc& plc,
         return std::to_string(e[0] + base) + "-" + std::to_string(e[1] + base);
     };
     const std::vector<Edge> all = plc_edges(plc);
-    for (const Edge& e : edges) {
+    // Candidates come from grids of the points' and the edges' boxes, in index order (the order
+    // of the messages): testing each edge against every point and edge was quadratic, and the
+    // largest part of edge protection's checks on surface meshes.
+    Box bounds;
+    std::vector<Box> point_boxes;
+    point_boxes.reserve(pts.size());
+    for (std::uint32_t v = 0; v < pts.size(); ++v) {
+        bounds.add(pts[v]);
+        point_boxes.push_back(box_of(v, v));
+    }
+    std::vector<Box> edge_boxes;
+    edge_boxes.reserve(all.size());
+    for (const Edge& f : all) {
+        edge_boxes.push_back(box_of(f[0], f[1]));
+    }
+    BoxGrid point_grid(bounds, point_boxes);
+    BoxGrid edge_grid(bounds, edge_boxes);
+    // Exact orientations settle most candidates without rationals: four points that are not
+    // coplanar are no two crossing segments, and a point off the plane of a, b and some other
+    // point is off line ab. Two corners of the bounding box serve as those other points; when
+    // both lie in the plane (or orient3d is zero for any reason) the rationals decide.
+    using predicates::GenericPoint3;
+    using predicates::Sign;
+    const std::array<GenericPoint3, 2> witnesses{
+        GenericPoint3(Point3{bounds.lo[0], bounds.lo[1], bounds.hi[2]}),
+        GenericPoint3(Point3{bounds.hi[0], bounds.lo[1], bounds.lo[2]})};
+    const auto off_line = [&](const GenericPoint3& a, const GenericPoint3& b, std::uint32_t v) {
+        const GenericPoint3 p = generic_point(plc.points, v);
+        return std::any_of(witnesses.begin(), witnesses.end(), [&](const GenericPoint3& x) {
+            return predicates::orient3d(a, b, p, x) != Sign::kZero;
+        });
+    };
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        const Edge& e = edges[k];
         const Box box = box_of(e[0], e[1]);
+        const GenericPoint3 ga = generic_point(plc.points, e[0]);
+        const GenericPoint3 gb = generic_point(plc.points, e[1]);
         const ExactPoint a = exact_point(plc.points, e[0]);
         const ExactPoint b = exact_point(plc.points, e[1]);
-        for (std::uint32_t v = 0; v < pts.size(); ++v) {
-            if (v != e[0] && v != e[1] && box.meets(box_of(v, v)) &&
+        std::vector<std::size_t> near_points = point_grid.near(box, k);
+        std::sort(near_points.begin(), near_points.end());
+        for (const std::size_t i : near_points) {
+            const auto v = static_cast<std::uint32_t>(i);
+            if (v != e[0] && v != e[1] && box.meets(point_boxes[v]) && !off_line(ga, gb, v) &&
                 inside_segment(a, b, exact_point(plc.points, v))) {
                 out.push_back(located_message(
                     plc.source,
@@ -210,9 +249,15 @@ std::vector<std::string> edge_violations(const Plc& plc,
                     "point " + std::to_string(v + base) + " lies inside edge " + ids(e)));
             }
         }
-        for (const Edge& f : all) {
+        std::vector<std::size_t> near_edges = edge_grid.near(box, k);
+        std::sort(near_edges.begin(), near_edges.end());
+        for (const std::size_t i : near_edges) {
+            const Edge& f = all[i];
             if (f[0] == e[0] || f[0] == e[1] || f[1] == e[0] || f[1] == e[1] ||
-                !box.meets(box_of(f[0], f[1]))) {
+                !box.meets(edge_boxes[i]) ||
+                predicates::orient3d(
+                    ga, gb, generic_point(plc.points, f[0]), generic_point(plc.points, f[1])) !=
+                    Sign::kZero) {
                 continue;
             }
             if (segments_cross(

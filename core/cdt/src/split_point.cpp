@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 #include <variant>
 
 #include "cavity/core/base/assert.h"
 #include "cavity/core/cdt/edge_protection.h"
+#include "dyadic_point.h"
 #include "exact_plane.h"
 
 namespace cavity::core {
@@ -112,6 +114,13 @@ std::optional<GenericPoint3> split_point(const GenericPoint3& p,
             const double k = std::nearbyint(target * steps);
             if (k <= 0 || k >= steps || std::abs(k / steps - target) > kShortWindow ||
                 k / steps < aim.lo || k / steps > aim.hi) {
+                continue;
+            }
+            const DyadicPoint fast = dyadic_point(*pp, *pq, static_cast<std::int64_t>(k), j);
+            if (fast.decided) {
+                if (fast.is_double) {
+                    return GenericPoint3(fast.point);
+                }
                 continue;
             }
             const auto s = predicates::segment_parameter_point(*pp, *pq, k, steps);

@@ -277,6 +277,42 @@ TEST(PlcValidity, CrossingEdgesStopProtection) {
     }
 }
 
+/// edge_violations takes its candidates from grids of boxes: on a lattice of 1728 points (a grid
+/// of 12 cells a side) it still finds every point inside a long diagonal edge and a short one,
+/// and the edges that cross, each once and in index order.
+TEST(PlcValidity, EdgeViolationsOnALatticeInIndexOrder) {
+    constexpr std::uint32_t kSide = 12;
+    std::vector<Point3> points;
+    const auto index = [&](std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+        return (x * kSide + y) * kSide + z;
+    };
+    for (std::uint32_t x = 0; x < kSide; ++x) {
+        for (std::uint32_t y = 0; y < kSide; ++y) {
+            for (std::uint32_t z = 0; z < kSide; ++z) {
+                points.push_back(
+                    {static_cast<double>(x), static_cast<double>(y), static_cast<double>(z)});
+            }
+        }
+    }
+    const Edge diagonal{index(0, 0, 0), index(11, 11, 11)};
+    const Edge short_edge{index(3, 7, 2), index(5, 7, 2)};
+    const Edge crossing{index(8, 1, 9), index(9, 2, 9)};
+    const Edge crossed{index(9, 1, 9), index(8, 2, 9)};
+    const Plc plc = make_plc(points, {}, {diagonal, short_edge, crossing, crossed});
+    const std::vector<Edge> asked{short_edge, diagonal, crossing};
+    std::vector<std::string> expected;
+    const auto id = [](std::uint32_t i) { return std::to_string(i); };
+    expected.push_back("test: point " + id(index(4, 7, 2)) + " lies inside edge " +
+                       id(short_edge[0]) + "-" + id(short_edge[1]));
+    for (std::uint32_t k = 1; k < kSide - 1; ++k) {
+        expected.push_back("test: point " + id(index(k, k, k)) + " lies inside edge " +
+                           id(diagonal[0]) + "-" + id(diagonal[1]));
+    }
+    expected.push_back("test: edges " + id(crossing[0]) + "-" + id(crossing[1]) + " and " +
+                       id(crossed[1]) + "-" + id(crossed[0]) + " cross");
+    EXPECT_EQ(edge_violations(plc, asked), expected);
+}
+
 TEST(PlcValidity, PreconditionIsChecked) {
     Plc plc = make_plc(cube_points(), cube_sides());
     plc.points.points.push_back({2, 2, 2.25});  // in the diametral ball of the diagonal 1-7

@@ -1,0 +1,96 @@
+#include "dyadic_point.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <optional>
+
+#include "cavity/predicates/dyadic.h"
+
+namespace cavity::core {
+
+namespace {
+
+__extension__ using Int128 = __int128;
+__extension__ using Uint128 = unsigned __int128;
+
+/// Binades whose spacings differ by more than this do not fit the integers: 53 + 60 bits for the
+/// finer-scaled coordinate, 10 more for the factor, one for the sum, and the sign stay below 128.
+constexpr int kMaxShift = 60;
+
+/// x = mantissa * 2^exponent with |mantissa| < 2^53 (x == 0: mantissa 0).
+struct Scaled {
+    std::int64_t mantissa;
+    int exponent;
+};
+
+Scaled scaled(double x) {
+    if (x == 0.0) {
+        return {0, 0};
+    }
+    const int e = predicates::spacing_exponent(x);
+    return {static_cast<std::int64_t>(std::ldexp(x, -e)), e};
+}
+
+/// (2^j - k) a + k b scaled by 2^-j, when it is a double; nullopt when it is not; the outer
+/// nullopt when undecided.
+std::optional<std::optional<double>> coordinate(double a, double b, std::int64_t k, int j) {
+    const Scaled sa = scaled(a);
+    const Scaled sb = scaled(b);
+    // The exponent of the common spacing: the finer one of the nonzero terms.
+    int e = 0;
+    if (sa.mantissa != 0 && sb.mantissa != 0) {
+        if (std::abs(sa.exponent - sb.exponent) > kMaxShift) {
+            return std::nullopt;
+        }
+        e = std::min(sa.exponent, sb.exponent);
+    } else {
+        e = sa.mantissa != 0 ? sa.exponent : sb.exponent;
+    }
+    const auto aligned = [&](const Scaled& s) {
+        return s.mantissa == 0 ? Int128{0} : Int128{s.mantissa} * (Int128{1} << (s.exponent - e));
+    };
+    const Int128 n = aligned(sa) * ((std::int64_t{1} << j) - k) + aligned(sb) * k;
+    if (n == 0) {
+        return std::optional<double>(0.0);
+    }
+    // n 2^(e - j) = m 2^(e - j + z) with m odd: a double exactly when m has at most 53 bits and
+    // its last bit is not below the subnormals' spacing (no overflow: the point lies between a and
+    // b).
+    const Uint128 magnitude = n < 0 ? -static_cast<Uint128>(n) : static_cast<Uint128>(n);
+    const auto low = static_cast<std::uint64_t>(magnitude);
+    const int z = low != 0 ? std::countr_zero(low)
+                           : 64 + std::countr_zero(static_cast<std::uint64_t>(magnitude >> 64));
+    const Uint128 odd = magnitude >> z;
+    const int exponent = e - j + z;
+    if ((odd >> 53) != 0 || exponent < -1074) {
+        return std::optional<double>();
+    }
+    const double value = std::ldexp(static_cast<double>(static_cast<std::uint64_t>(odd)), exponent);
+    return std::optional<double>(n < 0 ? -value : value);
+}
+
+}  // namespace
+
+DyadicPoint dyadic_point(const Point3& a, const Point3& b, std::int64_t k, int j) {
+    const double as[3] = {a.x, a.y, a.z};
+    const double bs[3] = {b.x, b.y, b.z};
+    double out[3] = {};
+    bool undecided = false;
+    for (int c = 0; c < 3; ++c) {
+        const auto v = coordinate(as[c], bs[c], k, j);
+        if (!v) {
+            undecided = true;  // unless another coordinate is surely not a double
+        } else if (!*v) {
+            return {true, false, {}};
+        } else {
+            out[c] = **v;
+        }
+    }
+    if (undecided) {
+        return {false, false, {}};
+    }
+    return {true, true, {out[0], out[1], out[2]}};
+}
+
+}  // namespace cavity::core
