@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <optional>
-#include <set>
+#include <unordered_map>
 #include <utility>
 
 #include "box_grid.h"
@@ -65,25 +65,27 @@ Box facet_box(const Plc& plc, const PlcFacet& facet) {
     return box_of(plc.points.points, corners);
 }
 
-/// The mesh simplices with their boxes, computed once for every facet's tests.
+/// The mesh simplices, shared by every facet's tests.
 struct BoxedMesh {
     std::span<const std::array<std::uint32_t, 4>> tets;
-    std::vector<Box> tet_boxes;
     std::vector<Triangle> triangles;  ///< each sorted, in increasing order
-    std::vector<Box> triangle_boxes;
-    Box bounds;  ///< of every point
+    const std::vector<Point3>& points;
 };
 
-/// Uniform grids of the mesh's tetrahedron and triangle boxes, made on the first full scan of a
-/// polygon: a carved domain scans for every polygon, and testing each polygon's box against every
-/// simplex's was quadratic on surface meshes.
+/// The boxes of the mesh's tetrahedra and triangles and uniform grids of them, made on the first
+/// full scan of a polygon: a carved domain scans for every polygon, and testing each polygon's box
+/// against every simplex's was quadratic on surface meshes. The whole hull's polygons are mostly
+/// decided without a scan (facet_triangle, covering_faces), so nothing here is made for them.
 class ScanIndex {
 public:
     /// The tetrahedra (or triangles) whose boxes may meet `box`, for polygon `facet` (each polygon
     /// asks once), in the grid's order: a function of the mesh alone.
     std::vector<std::size_t> tets_near(const BoxedMesh& mesh, const Box& box, std::size_t facet) {
         if (!tets_) {
-            tets_.emplace(mesh.bounds, mesh.tet_boxes);
+            for (const auto& t : mesh.tets) {
+                tet_boxes_.push_back(box_of(mesh.points, t));
+            }
+            tets_.emplace(bounds(mesh), tet_boxes_);
         }
         return tets_->near(box, facet);
     }
@@ -92,12 +94,32 @@ public:
                                             const Box& box,
                                             std::size_t facet) {
         if (!triangles_) {
-            triangles_.emplace(mesh.bounds, mesh.triangle_boxes);
+            for (const Triangle& g : mesh.triangles) {
+                triangle_boxes_.push_back(box_of(mesh.points, g));
+            }
+            triangles_.emplace(bounds(mesh), triangle_boxes_);
         }
         return triangles_->near(box, facet);
     }
 
+    /// The box of tetrahedron k, once tets_near has been asked.
+    const Box& tet_box(std::size_t k) const { return tet_boxes_[k]; }
+
+    /// The box of triangle k, once triangles_near has been asked.
+    const Box& triangle_box(std::size_t k) const { return triangle_boxes_[k]; }
+
 private:
+    /// The box of every point.
+    static Box bounds(const BoxedMesh& mesh) {
+        Box b;
+        for (const Point3& p : mesh.points) {
+            b.add(p);
+        }
+        return b;
+    }
+
+    std::vector<Box> tet_boxes_;
+    std::vector<Box> triangle_boxes_;
     std::optional<BoxGrid> tets_;
     std::optional<BoxGrid> triangles_;
 };
@@ -178,19 +200,28 @@ public:
     }
 
     Sign operator()(std::uint32_t v) const {
-        return std::binary_search(corners_.begin(), corners_.end(), v)
-                   ? Sign::kZero
-                   : plane_.side(generic_point(plc_.points, v));
+        if (std::binary_search(corners_.begin(), corners_.end(), v)) {
+            return Sign::kZero;
+        }
+        // Kept: the search around the facet asks of each vertex once per triangle around it, and
+        // orient3d with an implicit point can take thousands of instructions.
+        const auto [it, made] = sides_.try_emplace(v, Sign::kZero);
+        if (made) {
+            it->second = plane_.side(generic_point(plc_.points, v));
+        }
+        return it->second;
     }
 
 private:
     const Plc& plc_;
     const ExactPlane& plane_;
     std::vector<std::uint32_t> corners_;
+    mutable std::unordered_map<std::uint32_t, Sign> sides_;
 };
 
 /// True when mesh triangle g lies in the facet's plane with its centroid in the facet's region.
-bool in_facet(const FacetRegion& region,
+bool in_facet(const ExactPlane& plane,
+              const FacetRegion& region,
               const FacetSide& side,
               RationalPoints& rational,
               const Triangle& g) {
@@ -200,8 +231,13 @@ bool in_facet(const FacetRegion& region,
     const ExactPoint& a = rational[g[0]];
     const ExactPoint& b = rational[g[1]];
     const ExactPoint& c = rational[g[2]];
-    const ExactPoint centroid{
-        (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
+    // Only the coordinates the region's projection keeps (FacetRegion::contains).
+    ExactPoint centroid;
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (static_cast<int>(k) != plane.dropped_axis()) {
+            centroid[k] = (a[k] + b[k] + c[k]) / 3;
+        }
+    }
     return region.contains(centroid);
 }
 
@@ -256,7 +292,7 @@ std::optional<std::vector<Triangle>> covering_faces(const Plc& plc,
         frontier.pop_back();
         for (std::uint32_t k : around.of(v)) {
             const Triangle& g = mesh.triangles[k];
-            if (!around.first_visit_of_triangle(k) || !in_facet(region, side, rational, g)) {
+            if (!around.first_visit_of_triangle(k) || !in_facet(plane, region, side, rational, g)) {
                 continue;
             }
             faces.push_back(g);
@@ -268,7 +304,7 @@ std::optional<std::vector<Triangle>> covering_faces(const Plc& plc,
             }
         }
     }
-    if (covered != facet_region_area2(plc, facet, plane)) {
+    if (covered != facet_region_area2(plc, facet, plane, &rational)) {
         return std::nullopt;
     }
     return faces;
@@ -301,7 +337,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         return faces;
     }
     const FacetSide side(plc, facet, *plane);
-    const FacetRegion region(plc, facet, *plane);
+    const FacetRegion region(plc, facet, *plane, &rational);
     if (!carved) {
         if (auto found = covering_faces(plc, facet, *plane, region, side, mesh, around, rational)) {
             return std::move(*found);
@@ -310,7 +346,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
     const ExactPoints pts{plc.points};
     const Box box = facet_box(plc, facet);
     for (const std::size_t k : index_of_mesh.tets_near(mesh, box, index)) {
-        if (!box.meets(mesh.tet_boxes[k])) {
+        if (!box.meets(index_of_mesh.tet_box(k))) {
             continue;
         }
         const auto& t = mesh.tets[k];
@@ -333,15 +369,15 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
     Rational covered = 0;
     for (const std::size_t k : index_of_mesh.triangles_near(mesh, box, index)) {
         const Triangle& g = mesh.triangles[k];
-        if (!box.meets(mesh.triangle_boxes[k])) {
+        if (!box.meets(index_of_mesh.triangle_box(k))) {
             continue;
         }
-        if (in_facet(region, side, rational, g)) {
+        if (in_facet(*plane, region, side, rational, g)) {
             faces.push_back(g);
             covered += triangle_area2(*plane, rational[g[0]], rational[g[1]], rational[g[2]]);
         }
     }
-    if (!carved && covered != facet_region_area2(plc, facet, *plane)) {
+    if (!carved && covered != facet_region_area2(plc, facet, *plane, &rational)) {
         report.add(name + " is not a union of mesh triangles (their area differs from its area)");
     }
     return faces;
@@ -356,9 +392,14 @@ struct Sides {
 /// Each mesh triangle (its vertices sorted) with its tetrahedra, in increasing order of triangle.
 using TriangleSides = std::vector<std::pair<Triangle, Sides>>;
 
-TriangleSides triangle_sides(std::span<const std::array<std::uint32_t, 4>> tets) {
+/// For tetrahedra on the points 0 to vertices - 1.
+TriangleSides triangle_sides(std::span<const std::array<std::uint32_t, 4>> tets,
+                             std::size_t vertices) {
     // Sorting (triangle, tetrahedron) pairs groups each triangle's tetrahedra, in increasing
-    // tetrahedron order; a map of triangles cost a node allocation per triangle.
+    // tetrahedron order; a map of triangles cost a node allocation per triangle. The pairs are
+    // made in increasing tetrahedron order and sorted by three stable counting sorts on the
+    // triangle's vertices, least significant first: the order of a comparison sort of the pairs,
+    // in linear time (the comparison sort was a third of validating a surface mesh's CDT).
     std::vector<std::pair<Triangle, std::uint32_t>> faces;
     faces.reserve(4 * tets.size());
     for (std::uint32_t t = 0; t < tets.size(); ++t) {
@@ -369,7 +410,21 @@ TriangleSides triangle_sides(std::span<const std::array<std::uint32_t, 4>> tets)
             faces.push_back({s, t});
         }
     }
-    std::sort(faces.begin(), faces.end());
+    std::vector<std::pair<Triangle, std::uint32_t>> sorted(faces.size());
+    std::vector<std::size_t> start(vertices + 1);
+    for (std::size_t k = 3; k-- > 0;) {
+        std::fill(start.begin(), start.end(), 0);
+        for (const auto& face : faces) {
+            ++start[face.first[k] + 1];
+        }
+        for (std::size_t v = 0; v < vertices; ++v) {
+            start[v + 1] += start[v];
+        }
+        for (const auto& face : faces) {
+            sorted[start[face.first[k]]++] = face;
+        }
+        faces.swap(sorted);
+    }
     TriangleSides sides;
     for (const auto& [g, t] : faces) {
         if (sides.empty() || sides.back().first != g) {
@@ -512,7 +567,7 @@ CdtValidation validate_cdt(const Plc& plc,
             }
         }
     }
-    const TriangleSides sides = triangle_sides(tets);
+    const TriangleSides sides = triangle_sides(tets, plc.points.size());
     const bool carved = domain == CdtDomain::kCarved;
     std::vector<bool> used(plc.points.size(), false);
     for (const auto& t : tets) {
@@ -541,33 +596,32 @@ CdtValidation validate_cdt(const Plc& plc,
     if (!result.ok()) {
         return result;
     }
-    BoxedMesh mesh{tets, {}, {}, {}, {}};
+    BoxedMesh mesh{tets, {}, plc.points.points};
+    mesh.triangles.reserve(sides.size());
     for (const auto& [g, on] : sides) {
         mesh.triangles.push_back(g);
-    }
-    for (const auto& t : tets) {
-        mesh.tet_boxes.push_back(box_of(plc.points.points, t));
-    }
-    for (const Triangle& g : mesh.triangles) {
-        mesh.triangle_boxes.push_back(box_of(plc.points.points, g));
-    }
-    for (const Point3& p : plc.points.points) {
-        mesh.bounds.add(p);
     }
     VertexTriangles around(mesh.triangles, plc.points.size());
     ScanIndex index_of_mesh;
     RationalPoints rational(plc.points);
-    std::set<Triangle> constrained;
+    // Sorted like the sides, so one walk along both finds the constrained ones.
+    std::vector<Triangle> constrained;
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
         for (const Triangle& g :
              polygon_faces(plc, f, mesh, around, index_of_mesh, rational, carved, report)) {
-            constrained.insert(g);
+            constrained.push_back(g);
         }
     }
+    std::sort(constrained.begin(), constrained.end());
+    constrained.erase(std::unique(constrained.begin(), constrained.end()), constrained.end());
     result.polygon_triangles = constrained.size();
     const ExactPoints pts{plc.points};
+    auto next_constrained = constrained.begin();
     for (const auto& [g, on] : sides) {
-        if (constrained.contains(g)) {
+        while (next_constrained != constrained.end() && *next_constrained < g) {
+            ++next_constrained;
+        }
+        if (next_constrained != constrained.end() && *next_constrained == g) {
             continue;
         }
         if (on.count == 1) {

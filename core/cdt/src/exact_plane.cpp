@@ -54,11 +54,17 @@ bool level(const Point2& p, const Point2& x) {
     return p.v_lo <= x.v_hi && x.v_lo <= p.v_hi && p.v == x.v;
 }
 
-std::vector<Point2> project_loop(const Plc& plc, const std::vector<std::uint32_t>& loop, int drop) {
+/// The loop's corners projected, converted to rationals or taken from `rational` (the PLC's
+/// points) when given.
+std::vector<Point2> project_loop(const Plc& plc,
+                                 const std::vector<std::uint32_t>& loop,
+                                 int drop,
+                                 RationalPoints* rational = nullptr) {
     std::vector<Point2> out;
     out.reserve(loop.size());
     for (std::uint32_t c : loop) {
-        out.push_back(project(exact_point(plc.points, c), drop));
+        out.push_back(rational != nullptr ? project((*rational)[c], drop)
+                                          : project(exact_point(plc.points, c), drop));
     }
     return out;
 }
@@ -525,14 +531,17 @@ ExactPoint ExactPlane::crossing(const ExactPoint& ep, const ExactPoint& eq) cons
     return {ep[0] + t * (eq[0] - ep[0]), ep[1] + t * (eq[1] - ep[1]), ep[2] + t * (eq[2] - ep[2])};
 }
 
-FacetRegion::FacetRegion(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane)
-    : plc_(plc), facet_(facet), drop_(plane.dropped_axis()) {}
+FacetRegion::FacetRegion(const Plc& plc,
+                         const PlcFacet& facet,
+                         const ExactPlane& plane,
+                         RationalPoints* rational)
+    : plc_(plc), facet_(facet), drop_(plane.dropped_axis()), rational_(rational) {}
 
 const FacetRegion::Projected& FacetRegion::projected() const {
     if (!projected_) {
         Projected made;
         for (const auto& loop : facet_.loops) {
-            made.loops.push_back(project_loop(plc_, loop, drop_));
+            made.loops.push_back(project_loop(plc_, loop, drop_, rational_));
         }
         for (const Point3& h : facet_.holes) {
             made.hole_faces.push_back(containing_loops(made.loops, project(exact_point(h), drop_)));
@@ -566,11 +575,14 @@ bool crosses_facet_region(const Plc& plc,
     return region.contains(plane.crossing(exact_point(p), exact_point(q)));
 }
 
-Rational facet_region_area2(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane) {
+Rational facet_region_area2(const Plc& plc,
+                            const PlcFacet& facet,
+                            const ExactPlane& plane,
+                            RationalPoints* rational) {
     const int drop = plane.dropped_axis();
     std::vector<std::vector<Point2>> loops;
     for (const auto& loop : facet.loops) {
-        loops.push_back(project_loop(plc, loop, drop));
+        loops.push_back(project_loop(plc, loop, drop, rational));
     }
     const auto contains = nesting(loops);
     const std::size_t n = loops.size();
@@ -621,8 +633,12 @@ Rational triangle_area2(const ExactPlane& plane,
                         const ExactPoint& a,
                         const ExactPoint& b,
                         const ExactPoint& c) {
+    // The cross product of two sides in the projection, read in place: projecting the corners
+    // copied six rationals and rounded each to doubles, most of the validator's area sums.
     const int drop = plane.dropped_axis();
-    return loop_area2({project(a, drop), project(b, drop), project(c, drop)});
+    const std::size_t u = drop == 0 ? 1 : 0;
+    const std::size_t v = drop == 2 ? 1 : 2;
+    return abs(Rational((b[u] - a[u]) * (c[v] - a[v]) - (b[v] - a[v]) * (c[u] - a[u])));
 }
 
 }  // namespace cavity::core

@@ -145,12 +145,18 @@ struct Point2 {
 /// protection. Holds references to plc and facet.
 class FacetRegion {
 public:
-    FacetRegion(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane);
+    /// With `rational` (the PLC's points, kept by the caller), the loops' corners are taken from
+    /// it: a corner is shared by the facets around it, and so is its conversion.
+    FacetRegion(const Plc& plc,
+                const PlcFacet& facet,
+                const ExactPlane& plane,
+                RationalPoints* rational = nullptr);
 
     /// True when x (a point of the facet's plane, not on any loop side) lies in the region, by
     /// TetGen's rule (see PlcFacet): x is inside at least one loop, and no hole point of the facet
     /// lies in the same face of the loops' arrangement, i.e. no hole point is inside exactly the
-    /// same loops as x. Exact, in the projection that drops the plane's dropped_axis().
+    /// same loops as x. Exact, in the projection that drops the plane's dropped_axis(): x's
+    /// coordinate along that axis is never read, so a caller may leave it unmade.
     bool contains(const ExactPoint& x) const;
 
 private:
@@ -164,6 +170,7 @@ private:
     const Plc& plc_;
     const PlcFacet& facet_;
     int drop_;
+    RationalPoints* rational_;
     mutable std::optional<Projected> projected_;  ///< or not yet
 };
 
@@ -181,8 +188,12 @@ bool crosses_facet_region(const Plc& plc,
 
 /// Twice the area of the facet's region (the same rule), measured in the projection (exact). With
 /// non-crossing loops every face of the arrangement is "inside loop L, outside L's children": its
-/// area is L's minus its children's, and it counts unless a hole point lies in it.
-Rational facet_region_area2(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane);
+/// area is L's minus its children's, and it counts unless a hole point lies in it. The corners
+/// are taken from `rational` when given (as FacetRegion's).
+Rational facet_region_area2(const Plc& plc,
+                            const PlcFacet& facet,
+                            const ExactPlane& plane,
+                            RationalPoints* rational = nullptr);
 
 /// Where a point of the plane lies with respect to one loop, in the projection.
 enum class LoopPosition { kOutside, kOnBoundary, kInside };

@@ -6,6 +6,8 @@
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/mesh/star.h"
+#include "cavity/predicates/generic_predicates.h"
+#include "split_triangle.h"
 
 namespace cavity::core {
 
@@ -100,6 +102,12 @@ FacetGeometry::FacetGeometry(const Geometry& geometry, const Plc& plc, const Plc
     }())
     , region_(plc, facet, plane_)
     , triangle_(facet.loops.size() == 1 && facet.loops[0].size() == 3 && facet.holes.empty()) {
+    if (!triangle_ && facet.loops.size() == 1 && facet.holes.empty()) {
+        if (const auto corners = split_triangle_corners(plc.points, facet.loops[0])) {
+            split_triangle_.emplace(std::array<predicates::GenericPoint3, 3>{
+                (*corners)[0], (*corners)[1], (*corners)[2]});
+        }
+    }
     for (const auto& loop : facet.loops) {
         for (std::size_t i = 0; i < loop.size(); ++i) {
             const VertexId a = loop[i];
@@ -117,7 +125,9 @@ const FacetGeometry::Placed& FacetGeometry::placed(VertexId v) {
     auto it = placed_.find(v);
     if (it == placed_.end()) {
         ExactPoint p = exact_point(geometry_.generic(v));
-        Rational d = plane_.offset(p);
+        // A vertex on h (side by orient3d, exact) has offset zero: most vertices placed are, for
+        // the centroids of faces in h, and the offset's rational dot product is not needed.
+        Rational d = side(v) == 0 ? Rational(0) : plane_.offset(p);
         it = placed_.emplace(v, Placed{std::move(d), std::move(p)}).first;
     }
     return it->second;
@@ -149,6 +159,43 @@ bool FacetGeometry::has_left_and_right(std::span<const VertexId> vs) {
     return left && right;
 }
 
+bool FacetGeometry::edge_crosses_region(VertexId a, VertexId b) {
+    const std::uint64_t key = (std::uint64_t{a} << 32) | b;
+    if (const auto it = edges_crossing_.find(key); it != edges_crossing_.end()) {
+        return it->second;
+    }
+    bool crosses = false;
+    if (triangle_) {
+        crosses = crosses_facet_region(
+            plc_, facet_, plane_, region_, geometry_.generic(a), geometry_.generic(b));
+    } else if (split_triangle_) {
+        // As crosses_facet_region's triangle: ab turns the same way, strictly, around the three
+        // sides of the corners' triangle, the region (no crossing point lies on a loop side).
+        const auto& c = *split_triangle_;
+        const predicates::GenericPoint3 p = geometry_.generic(a);
+        const predicates::GenericPoint3 q = geometry_.generic(b);
+        const predicates::Sign first = predicates::orient3d(p, q, c[0], c[1]);
+        crosses = first != predicates::Sign::kZero &&
+                  predicates::orient3d(p, q, c[1], c[2]) == first &&
+                  predicates::orient3d(p, q, c[2], c[0]) == first;
+    } else {
+        // The offsets are kept, so the crossing a + along (b - a) needs no plane evaluation; only
+        // the coordinates the region's projection keeps are made (FacetRegion::contains).
+        const Placed& pa = placed(a);
+        const Placed& pb = placed(b);
+        const Rational along = pa.offset / (pa.offset - pb.offset);
+        ExactPoint x;
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (static_cast<int>(k) != plane_.dropped_axis()) {
+                x[k] = pa.point[k] + along * (pb.point[k] - pa.point[k]);
+            }
+        }
+        crosses = region_.contains(x);
+    }
+    edges_crossing_.emplace(key, crosses);
+    return crosses;
+}
+
 FacetGeometry::Contact FacetGeometry::contact(const TetVertices& t) {
     if (is_ghost(t)) {
         return Contact::kNone;
@@ -156,26 +203,7 @@ FacetGeometry::Contact FacetGeometry::contact(const TetVertices& t) {
     for (VertexId a : t) {
         for (VertexId b : t) {
             if (side(a) < 0 && side(b) > 0) {
-                if (triangle_) {
-                    return crosses_facet_region(plc_,
-                                                facet_,
-                                                plane_,
-                                                region_,
-                                                geometry_.generic(a),
-                                                geometry_.generic(b))
-                               ? Contact::kCrosses
-                               : Contact::kNone;
-                }
-                // The offsets are kept, so the crossing a + along (b - a) needs no plane
-                // evaluation.
-                const Placed& pa = placed(a);
-                const Placed& pb = placed(b);
-                const Rational along = pa.offset / (pa.offset - pb.offset);
-                ExactPoint x;
-                for (std::size_t k = 0; k < 3; ++k) {
-                    x[k] = pa.point[k] + along * (pb.point[k] - pa.point[k]);
-                }
-                return region_.contains(x) ? Contact::kCrosses : Contact::kNone;
+                return edge_crosses_region(a, b) ? Contact::kCrosses : Contact::kNone;
             }
         }
     }
@@ -201,17 +229,31 @@ bool FacetGeometry::face_in_region(std::span<const VertexId> on) {
     if (on.size() == 2 && side_set_.contains({std::min(on[0], on[1]), std::max(on[0], on[1])})) {
         return false;
     }
+    std::array<VertexId, 3> key{kGhostVertex, kGhostVertex, kGhostVertex};
+    std::copy(on.begin(), on.end(), key.begin());
+    std::sort(key.begin(), key.end());
+    if (const auto it = faces_in_region_.find(key); it != faces_in_region_.end()) {
+        return it->second;
+    }
+    // Only the coordinates the region's projection keeps (FacetRegion::contains).
+    const auto drop = static_cast<std::size_t>(plane_.dropped_axis());
     ExactPoint centroid{0, 0, 0};
     for (VertexId v : on) {
         const ExactPoint& p = placed(v).point;
         for (std::size_t k = 0; k < 3; ++k) {
-            centroid[k] += p[k];
+            if (k != drop) {
+                centroid[k] += p[k];
+            }
         }
     }
-    for (auto& c : centroid) {
-        c /= static_cast<int>(on.size());
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (k != drop) {
+            centroid[k] /= static_cast<int>(on.size());
+        }
     }
-    return region_.contains(centroid);
+    const bool inside = region_.contains(centroid);
+    faces_in_region_.emplace(key, inside);
+    return inside;
 }
 
 PolygonRegion find_polygon_region(const ArrayStorage& storage, FacetGeometry& facet) {

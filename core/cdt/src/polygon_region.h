@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <set>
 #include <span>
 #include <unordered_map>
@@ -77,6 +78,9 @@ private:
     /// in the region.
     bool face_in_region(std::span<const VertexId> on);
 
+    /// Whether left-right edge ab (side(a) < 0 < side(b)) crosses h inside the region.
+    bool edge_crosses_region(VertexId a, VertexId b);
+
     const Geometry& geometry_;
     const Plc& plc_;
     const PlcFacet& facet_;
@@ -96,9 +100,29 @@ private:
     /// side(v) by the exact orient3d predicate, whose filters decide most signs in doubles.
     std::unordered_map<VertexId, int> vertex_sides_;
     std::map<VertexId, Placed> placed_;
+
+    /// The answers of face_in_region by the simplex's sorted vertices (unused slots kGhostVertex)
+    /// and of edge_crosses_region by the edge (left end in the high half). Every tetrahedron
+    /// around a vertex, edge or triangle of the polygon asks the same question of it, and
+    /// finishing asks again of each triangle: the rational centroid and region test were most of
+    /// polygon insertion.
+    struct TripleHash {
+        std::size_t operator()(const std::array<VertexId, 3>& k) const {
+            std::uint64_t h = k[0];
+            h = h * 0x9E3779B97F4A7C15ull + k[1];
+            h = h * 0x9E3779B97F4A7C15ull + k[2];
+            return static_cast<std::size_t>(h ^ (h >> 29));
+        }
+    };
+
+    std::unordered_map<std::array<VertexId, 3>, bool, TripleHash> faces_in_region_;
+    std::unordered_map<std::uint64_t, bool> edges_crossing_;
     /// A triangle without hole points: a left-right edge crosses it when it turns the same way
     /// around its three sides (three orientations, crosses_facet_region), no crossing point needed.
     bool triangle_;
+    /// The same for a triangle whose sides edge protection split (split_triangle.h): its three
+    /// corners, or nullopt.
+    std::optional<std::array<predicates::GenericPoint3, 3>> split_triangle_;
     std::vector<std::array<VertexId, 2>> sides_;
     std::set<std::array<VertexId, 2>> side_set_;
     std::set<VertexId> corners_;

@@ -1,6 +1,8 @@
 #include "triangle_intersection.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "cavity/predicates/orient3d.h"
 
@@ -31,8 +33,27 @@ int orient2d_projected(const Point3& a, const Point3& b, const Point3& c, int dr
 }
 
 int projection_axis(const Point3& a, const Point3& b, const Point3& c) {
+    // The axis of the normal's largest component by a floating-point estimate is tried first: its
+    // projection is a triangle unless the estimate is far off, and the exact test then answers
+    // from its filter. A degenerate projection (an axis-parallel plane seen edge-on, the commonest
+    // flat face) makes orient3d prove a zero in exact arithmetic, the most expensive answer.
+    const double u[3]{b.x - a.x, b.y - a.y, b.z - a.z};
+    const double v[3]{c.x - a.x, c.y - a.y, c.z - a.z};
+    const std::array<double, 3> size{std::abs(u[1] * v[2] - u[2] * v[1]),
+                                     std::abs(u[2] * v[0] - u[0] * v[2]),
+                                     std::abs(u[0] * v[1] - u[1] * v[0])};
+    int first = 0;
+    for (int k = 1; k < 3; ++k) {
+        // NaN (an overflowed estimate) compares false and leaves the earlier axis.
+        if (size[static_cast<std::size_t>(k)] > size[static_cast<std::size_t>(first)]) {
+            first = k;
+        }
+    }
+    if (orient2d_projected(a, b, c, first) != 0) {
+        return first;
+    }
     for (int drop = 0; drop < 2; ++drop) {
-        if (orient2d_projected(a, b, c, drop) != 0) {
+        if (drop != first && orient2d_projected(a, b, c, drop) != 0) {
             return drop;
         }
     }
@@ -86,29 +107,14 @@ bool in_triangle(const Point3& p, const Point3& a, const Point3& b, const Point3
     return !(negative && positive);
 }
 
-/// All three corners strictly on one side of the plane of abc.
-bool strictly_on_one_side(const Point3& a,
-                          const Point3& b,
-                          const Point3& c,
-                          const Point3& p,
-                          const Point3& q,
-                          const Point3& r) {
-    const int sp = orient(a, b, c, p);
-    return sp != 0 && sp == orient(a, b, c, q) && sp == orient(a, b, c, r);
-}
-
-}  // namespace
-
-bool is_degenerate_triangle(const Point3& a, const Point3& b, const Point3& c) {
-    // Collinear in space exactly when collinear in each of the three projections.
-    return orient2d_projected(a, b, c, 0) == 0 && orient2d_projected(a, b, c, 1) == 0 &&
-           orient2d_projected(a, b, c, 2) == 0;
-}
-
-bool segment_meets_triangle(
-    const Point3& p, const Point3& q, const Point3& a, const Point3& b, const Point3& c) {
-    const int sp = orient(a, b, c, p);
-    const int sq = orient(a, b, c, q);
+/// segment_meets_triangle with sp = orient(a, b, c, p) and sq = orient(a, b, c, q) known.
+bool segment_meets_triangle_sided(const Point3& p,
+                                  const Point3& q,
+                                  const Point3& a,
+                                  const Point3& b,
+                                  const Point3& c,
+                                  int sp,
+                                  int sq) {
     if (sp != 0 && sp == sq) {
         return false;
     }
@@ -127,6 +133,19 @@ bool segment_meets_triangle(
     const bool negative = s1 < 0 || s2 < 0 || s3 < 0;
     const bool positive = s1 > 0 || s2 > 0 || s3 > 0;
     return !(negative && positive);
+}
+
+}  // namespace
+
+bool is_degenerate_triangle(const Point3& a, const Point3& b, const Point3& c) {
+    // Collinear in space exactly when collinear in each of the three projections.
+    return orient2d_projected(a, b, c, 0) == 0 && orient2d_projected(a, b, c, 1) == 0 &&
+           orient2d_projected(a, b, c, 2) == 0;
+}
+
+bool segment_meets_triangle(
+    const Point3& p, const Point3& q, const Point3& a, const Point3& b, const Point3& c) {
+    return segment_meets_triangle_sided(p, q, a, b, c, orient(a, b, c, p), orient(a, b, c, q));
 }
 
 bool triangles_meet_improperly(const std::vector<Point3>& points,
@@ -186,14 +205,24 @@ bool triangles_meet_improperly(const std::vector<Point3>& points,
     const Point3& d = P[t[0]];
     const Point3& e = P[t[1]];
     const Point3& f = P[t[2]];
-    if (strictly_on_one_side(a, b, c, d, e, f) || strictly_on_one_side(d, e, f, a, b, c)) {
+    // Each corner's side of the other triangle's plane, taken once: the side tests below ask for
+    // the same signs, and for coplanar triangles every one is a zero proved in exact arithmetic.
+    const std::array<int, 3> st{orient(a, b, c, d), orient(a, b, c, e), orient(a, b, c, f)};
+    if (st[0] != 0 && st[0] == st[1] && st[0] == st[2]) {
+        return false;  // t strictly on one side of s's plane
+    }
+    const std::array<int, 3> ss{orient(d, e, f, a), orient(d, e, f, b), orient(d, e, f, c)};
+    if (ss[0] != 0 && ss[0] == ss[1] && ss[0] == ss[2]) {
         return false;
     }
     // Two closed triangles meet exactly when a side of one meets the other: an extreme point of
     // their (convex) intersection lies on the boundary of one of them.
-    return segment_meets_triangle(a, b, d, e, f) || segment_meets_triangle(b, c, d, e, f) ||
-           segment_meets_triangle(c, a, d, e, f) || segment_meets_triangle(d, e, a, b, c) ||
-           segment_meets_triangle(e, f, a, b, c) || segment_meets_triangle(f, d, a, b, c);
+    return segment_meets_triangle_sided(a, b, d, e, f, ss[0], ss[1]) ||
+           segment_meets_triangle_sided(b, c, d, e, f, ss[1], ss[2]) ||
+           segment_meets_triangle_sided(c, a, d, e, f, ss[2], ss[0]) ||
+           segment_meets_triangle_sided(d, e, a, b, c, st[0], st[1]) ||
+           segment_meets_triangle_sided(e, f, a, b, c, st[1], st[2]) ||
+           segment_meets_triangle_sided(f, d, a, b, c, st[2], st[0]);
 }
 
 }  // namespace cavity::core

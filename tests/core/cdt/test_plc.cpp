@@ -17,9 +17,11 @@
 #include "cavity/core/cdt/plc_validity.h"
 #include "cavity/core/cdt/read_poly.h"
 #include "cavity/core/live/triangulate.h"
+#include "cavity/predicates/orient3d.h"
 #include "plc_builders.h"
 // White-box: the region rule is internal to the core.
 #include "../../../core/cdt/src/exact_plane.h"
+#include "../../../core/cdt/src/split_triangle.h"
 
 namespace cavity::core {
 namespace {
@@ -881,6 +883,84 @@ TEST(Messages, ValidatorNamesFileIds) {
             << e.what();
     }
     std::filesystem::remove(path);
+}
+
+// --- a triangle whose sides edge protection split (split_triangle.h) ---------------------------
+
+/// Triangle A B C in the plane z = 0 with implicit points inside its sides (t = 1/4 on AB, 1/2 on
+/// BC, 1/3 on CA: the last has no double), its loop in `order` (indices into A, P, B, Q, C, R).
+Plc split_triangle_plc(const std::vector<std::uint32_t>& order) {
+    using predicates::SegmentParameterPoint;
+    const Point3 a{0, 0, 0};
+    const Point3 b{4, 0, 0};
+    const Point3 c{0, 4, 0};
+    Plc plc;
+    plc.points.exact = {a,
+                        SegmentParameterPoint{a, b, 1, 4},
+                        b,
+                        SegmentParameterPoint{b, c, 1, 2},
+                        c,
+                        SegmentParameterPoint{c, a, 1, 3}};
+    for (const auto& g : plc.points.exact) {
+        plc.points.points.push_back(rounded_point(g));
+    }
+    PlcFacet facet;
+    facet.loops = {order};
+    plc.facets = {facet};
+    return plc;
+}
+
+TEST(SplitTriangle, FoundOnlyWhenEveryOtherCornerIsInsideASide) {
+    const Plc plc = split_triangle_plc({0, 1, 2, 3, 4, 5});
+    const auto corners = split_triangle_corners(plc.points, plc.facets[0].loops[0]);
+    ASSERT_TRUE(corners.has_value());
+    EXPECT_EQ((*corners)[1].x, 4.0);
+    // The reverse order is the same triangle.
+    EXPECT_TRUE(split_triangle_corners(plc.points, {5, 4, 3, 2, 1, 0}).has_value());
+    // Out of order (side P-B-A doubles back), or a split point between corners it is not on.
+    EXPECT_FALSE(split_triangle_corners(plc.points, {0, 2, 1, 3, 4, 5}).has_value());
+    EXPECT_FALSE(split_triangle_corners(plc.points, {0, 1, 2, 5, 4, 3}).has_value());
+    // One side split is enough; a parameter at an end is not inside; no implicit corner at all.
+    EXPECT_TRUE(split_triangle_corners(plc.points, {0, 1, 2, 4}).has_value());
+    Plc at_end = split_triangle_plc({0, 1, 2, 3, 4, 5});
+    at_end.points.exact[1] = predicates::SegmentParameterPoint{{0, 0, 0}, {4, 0, 0}, 4, 4};
+    EXPECT_FALSE(split_triangle_corners(at_end.points, {0, 1, 2, 3, 4, 5}).has_value());
+    Plc explicit_only = split_triangle_plc({0, 2, 4});
+    explicit_only.points.exact.clear();
+    EXPECT_FALSE(split_triangle_corners(explicit_only.points, {0, 2, 4}).has_value());
+}
+
+TEST(SplitTriangle, CrossingsAgreeWithTheRationalRegion) {
+    // Segments from below to above z = 0 on a grid of quarter steps: many pass exactly through a
+    // corner, a split point or a side. The three orientations must answer as the region does at
+    // the rational crossing point (a point on the boundary is outside).
+    const Plc plc = split_triangle_plc({0, 1, 2, 3, 4, 5});
+    const PlcFacet& facet = plc.facets[0];
+    const auto plane = ExactPlane::of_facet(plc, facet);
+    ASSERT_TRUE(plane.has_value());
+    const FacetRegion region(plc, facet, *plane);
+    const auto corners = split_triangle_corners(plc.points, facet.loops[0]);
+    ASSERT_TRUE(corners.has_value());
+    Random random(7);
+    int inside = 0;
+    int outside = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        const auto coordinate = [&] { return 0.25 * static_cast<double>(random.below(21)) - 0.5; };
+        const Point3 p{
+            coordinate(), coordinate(), -1.0 - 0.25 * static_cast<double>(random.below(4))};
+        const Point3 q{
+            coordinate(), coordinate(), 1.0 + 0.25 * static_cast<double>(random.below(4))};
+        const predicates::Sign first = predicates::orient3d(p, q, (*corners)[0], (*corners)[1]);
+        const bool by_orientation =
+            first != predicates::Sign::kZero &&
+            predicates::orient3d(p, q, (*corners)[1], (*corners)[2]) == first &&
+            predicates::orient3d(p, q, (*corners)[2], (*corners)[0]) == first;
+        const bool by_region = region.contains(plane->crossing(exact_point(p), exact_point(q)));
+        EXPECT_EQ(by_orientation, by_region) << p.x << " " << p.y << " -> " << q.x << " " << q.y;
+        (by_region ? inside : outside) += 1;
+    }
+    EXPECT_GT(inside, 100);
+    EXPECT_GT(outside, 100);
 }
 
 }  // namespace

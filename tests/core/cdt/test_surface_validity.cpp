@@ -2,6 +2,7 @@
 // non-manifold edges, degenerate facets and facets meeting improperly, the last by exact orient3d
 // signs (triangle_intersection.h).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -366,6 +367,38 @@ TEST(TriangleIntersection, EachSharingCase) {
     EXPECT_TRUE(meet(with({{1, 1, 0}}), {0, 1, 2}, {1, 0, 3}));
     // All three: the same triangle twice.
     EXPECT_TRUE(meet(base, {0, 1, 2}, {2, 0, 1}));
+}
+
+TEST(TriangleIntersection, TheProjectionAxisKeepsEveryTriangleATriangle) {
+    // Axis-parallel planes (two projections degenerate), tilted ones, and a sliver whose normal
+    // estimate is dominated by rounding: the axis returned always projects the triangle onto a
+    // triangle (exact orientation not zero).
+    const std::vector<std::array<Point3, 3>> triangles = {
+        {{{0, 0, 5}, {3, 0, 5}, {0, 2, 5}}},
+        {{{1, 7, 0}, {1, 7, 3}, {4, 7, 1}}},
+        {{{2, 0, 0}, {2, 5, 1}, {2, 1, 4}}},
+        {{{0, 0, 0}, {1, 1, 1}, {1, 0, 2}}},
+        {{{0.1, 0.2, 0.3}, {0.1 + 0x1p-50, 0.2, 0.3}, {0.1, 0.2 + 0x1p-50, 0.3 + 0x1p-52}}},
+    };
+    for (const auto& [a, b, c] : triangles) {
+        ASSERT_FALSE(is_degenerate_triangle(a, b, c));
+        const int drop = projection_axis(a, b, c);
+        EXPECT_NE(orient2d_projected(a, b, c, drop), 0) << "drop " << drop;
+    }
+    // Random small-integer triangles, mostly near axis-parallel.
+    Random random(21);
+    for (int trial = 0; trial < 2000; ++trial) {
+        std::array<Point3, 3> t;
+        for (Point3& p : t) {
+            p = {static_cast<double>(random.below(3)),
+                 static_cast<double>(random.below(3)),
+                 static_cast<double>(random.below(2))};
+        }
+        if (is_degenerate_triangle(t[0], t[1], t[2])) {
+            continue;
+        }
+        EXPECT_NE(orient2d_projected(t[0], t[1], t[2], projection_axis(t[0], t[1], t[2])), 0);
+    }
 }
 
 TEST(TriangleIntersection, ExactWithinAnUlpOfAPlane) {
