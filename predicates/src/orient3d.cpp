@@ -42,6 +42,8 @@ std::optional<Sign> orient3d_small_integers(const Point3& a,
 
 }  // namespace
 
+// orient3d_staged_on_lattice (lattice.h) gives this function's verdict on lattices without
+// calling it: every small-integer query decided here at kAdaptive (lattice_test checks it).
 Verdict orient3d_slow(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
     if (const std::optional<Sign> s = orient3d_small_integers(a, b, c, d)) {
         return {*s, Stage::kAdaptive};

@@ -167,9 +167,9 @@ TEST(InsphereSos, MatchesOracleOnGridPoints) {
     EXPECT_GT(tally.depths[0], 500);
 }
 
-// The lattice tie-break (plain cofactors, for grids) against the oracle on every exact tie among
-// random tuples of a coarse grid spanning the lattice bound (715, predicates/lattice.h), where the
-// cofactors' intermediates are largest.
+// The lattice tie-break (plain cofactors, for grids) against the oracle, and its cofactor count
+// against the staged tie-break's, on every exact tie among random tuples of a coarse grid spanning
+// the lattice bound (715, predicates/lattice.h), where the cofactors' intermediates are largest.
 TEST(InsphereSos, LatticeTieBreakMatchesOracle) {
     std::mt19937_64 rng(kSeed + 9);
     std::vector<Point3> points = grid(0, 5);
@@ -192,7 +192,12 @@ TEST(InsphereSos, LatticeTieBreakMatchesOracle) {
                         test::unweighted(c),
                         test::unweighted(d),
                         test::unweighted(e)};
-        ASSERT_EQ(detail::sos_tie_on_lattice(a, b, c, d, e, keys), symbolic_lifted(p, keys))
+        const Sign sign = symbolic_lifted(p, keys);
+        ASSERT_EQ(detail::sos_tie_on_lattice(a, b, c, d, e, keys), sign) << describe(p, keys);
+        // The counting engine's lattice route: the same sign, and the staged route's count.
+        const detail::SosTie tie = detail::sos_tie_on_lattice_counted(a, b, c, d, e, keys);
+        ASSERT_EQ(tie.sign, sign) << describe(p, keys);
+        ASSERT_EQ(tie.cofactors, detail::sos_tie_counted(a, b, c, d, e, keys).cofactors)
             << describe(p, keys);
     }
     EXPECT_GT(ties, 100);

@@ -2,7 +2,8 @@
 // kLatticeMaxSpan along each axis, the plain insphere and orient3d determinants have the exact
 // sign. Random, extreme (coordinates at the box's faces, which maximises every intermediate of the
 // evaluation) and degenerate-rich queries, at large integer offsets too; and the detector accepts
-// exactly the integer points and the boxes of the bound.
+// exactly the integer points and the boxes of the bound. The counting engine's lattice route gives
+// orient3d_staged's verdict, stage included.
 
 #include "cavity/predicates/lattice.h"
 
@@ -14,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "cavity/predicates/oracle.h"
+#include "cavity/predicates/orient3d.h"
 #include "query_generators.h"
 
 namespace cavity::predicates::testing {
@@ -138,6 +140,48 @@ TEST(Lattice, EveryCornerQueryAgreesWithTheOracle) {
             orient3d_on_lattice(p[0], p[1], p[2], p[3]) != oracle::orient3d(p[0], p[1], p[2], p[3]);
     }
     EXPECT_EQ(wrong, 0u);
+}
+
+// The counting engine's orient3d on grids must count the stage orient3d_staged reports: the same
+// sign and stage on random, extreme and degenerate-rich queries, at the largest offsets the route
+// takes (coordinates just inside kLatticeStagedMagnitude).
+TEST(Lattice, StagedRouteGivesTheStagedVerdict) {
+    const std::array<double, 5> offsets{
+        0, -357, 1e9, kLatticeStagedMagnitude - 1 - kSpan, -kLatticeStagedMagnitude + 1};
+    std::array<std::size_t, kStageCount> stages{};
+    std::size_t wrong = 0;
+    for (const Draw draw : {uniform, extreme, coarse}) {
+        Rng rng(74);
+        for (int i = 0; i < 20'000; ++i) {
+            const double offset = offsets[static_cast<std::size_t>(i) % offsets.size()];
+            std::array<Point3, 4> p{};
+            for (Point3& q : p) {
+                q = {offset + draw(rng), offset + draw(rng), offset + draw(rng)};
+            }
+            ASSERT_TRUE(is_staged_lattice_box({offset, offset, offset},
+                                              {offset + kSpan, offset + kSpan, offset + kSpan}));
+            const Verdict route = orient3d_staged_on_lattice(p[0], p[1], p[2], p[3]);
+            const Verdict staged = orient3d_staged(p[0], p[1], p[2], p[3]);
+            ++stages[static_cast<std::size_t>(staged.stage)];
+            if ((route.sign != staged.sign || route.stage != staged.stage) && ++wrong <= 5) {
+                ADD_FAILURE() << "the lattice route's verdict differs at offset " << offset << ": ("
+                              << p[0].x << " " << p[0].y << " " << p[0].z << ") ...";
+            }
+        }
+    }
+    EXPECT_EQ(wrong, 0u);
+    // Not vacuous: both stages the route reports are reached.
+    EXPECT_GT(stages[static_cast<std::size_t>(Stage::kFilter)], 1000u);
+    EXPECT_GT(stages[static_cast<std::size_t>(Stage::kAdaptive)], 1000u);
+}
+
+TEST(Lattice, StagedBoxStopsAtTheMagnitude) {
+    const double m = kLatticeStagedMagnitude;
+    EXPECT_TRUE(is_staged_lattice_box({-m + 1, -m + 1, -m + 1}, {m - 1, m - 1, m - 1}));
+    EXPECT_FALSE(is_staged_lattice_box({-m, 0, 0}, {0, 0, 0}));
+    EXPECT_FALSE(is_staged_lattice_box({0, 0, -m}, {0, 0, 0}));
+    EXPECT_FALSE(is_staged_lattice_box({0, 0, 0}, {0, m, 0}));
+    EXPECT_FALSE(is_staged_lattice_box({0, 0, 0}, {0, 0, m}));
 }
 
 }  // namespace

@@ -179,6 +179,57 @@ TEST(Stages, WalkOrientationsCountTheStaticStage) {
     EXPECT_GT(at(mine, Stage::kExact) + at(mine, Stage::kAdaptive), 0u);
 }
 
+// On a lattice the counted orientations derive orient3d_staged's stage instead of running it
+// (lattice.h's orient3d_staged_on_lattice): the same counts as the staged predicate, for the tests
+// of vertices and the walks' tests in the box, where a query point off the lattice (a straight
+// walk's source) takes the staged predicate.
+TEST(Stages, OnALatticeOrientationsCountTheStagedPredicatesStages) {
+    std::vector<Point3> grid;
+    for (int x = 0; x < 5; ++x) {
+        for (int y = 0; y < 5; ++y) {
+            for (int z = 0; z < 5; ++z) {
+                grid.push_back({double(x), double(y), double(z)});
+            }
+        }
+    }
+    const Geometry g = unweighted(grid);
+    ASSERT_TRUE(g.lattice());
+    std::mt19937_64 rng(19);
+    std::uniform_int_distribution<VertexId> pick(0, static_cast<VertexId>(g.size() - 1));
+    Counters by_vertex;
+    Counters in_box;
+    Counters direct;      // orient3d_staged's stages, for the tests of vertices
+    Counters direct_box;  // the same for the tests in the box (no static stage)
+    constexpr int kQueries = 20000;
+    for (int i = 0; i < kQueries; ++i) {
+        const VertexId a = pick(rng), b = pick(rng), c = pick(rng), d = pick(rng);
+        const auto v = predicates::orient3d_staged(g.point(a), g.point(b), g.point(c), g.point(d));
+        direct.count_predicate(PredicateKind::kOrient3d, v.stage);
+        EXPECT_EQ(g.orient3d(a, b, c, d, by_vertex), v.sign);
+        // Every fourth query point off the lattice, still in the box.
+        const Point3 q =
+            i % 4 == 0 ? Point3{g.point(d).x * 0.75 + 0.5, g.point(d).y, g.point(d).z} : g.point(d);
+        ASSERT_TRUE(g.in_box(q));
+        const auto w = predicates::orient3d_staged(g.point(a), g.point(b), g.point(c), q);
+        const Sign s = g.orient3d_in_box(g.point(a), g.point(b), g.point(c), q, in_box);
+        EXPECT_EQ(s, w.sign);
+        Uncounted none;
+        EXPECT_EQ(s, g.orient3d_in_box(g.point(a), g.point(b), g.point(c), q, none));
+        direct_box.count_predicate(PredicateKind::kOrient3d, w.stage);
+    }
+    EXPECT_EQ(by_vertex.stage_calls[kOrient3d], direct.stage_calls[kOrient3d]);
+    // In the box the static filter decides first, and only what the semi-static filter would.
+    const auto& mine = in_box.stage_calls[kOrient3d];
+    const auto& theirs = direct_box.stage_calls[kOrient3d];
+    EXPECT_EQ(at(mine, Stage::kStatic) + at(mine, Stage::kFilter), at(theirs, Stage::kFilter));
+    EXPECT_EQ(at(mine, Stage::kAdaptive), at(theirs, Stage::kAdaptive));
+    EXPECT_EQ(at(mine, Stage::kExact), at(theirs, Stage::kExact));
+    // Not vacuous: the filter, and the exact zeros after it, are reached in both forms.
+    EXPECT_GT(at(by_vertex.stage_calls[kOrient3d], Stage::kFilter), 0u);
+    EXPECT_GT(at(by_vertex.stage_calls[kOrient3d], Stage::kAdaptive), 0u);
+    EXPECT_GT(at(in_box.stage_calls[kOrient3d], Stage::kAdaptive), 0u);
+}
+
 TEST(Stages, WeightedGeometryHasNoStaticStage) {
     const PointSet set = generate_points(
         "cube", 1000, 4, WeightSpec{.kind = WeightSpec::Kind::kUniform, .a = 0.0, .b = 0.01});

@@ -91,6 +91,15 @@ Sign sos_tie_on_lattice(const Point3& a,
                         const Point3& e,
                         const Keys5& keys);
 
+/// sos_tie_on_lattice, with the cofactors it evaluated: the counting engine takes the plain
+/// engine's route on grids, where ties are most of the insphere tests.
+SosTie sos_tie_on_lattice_counted(const Point3& a,
+                                  const Point3& b,
+                                  const Point3& c,
+                                  const Point3& d,
+                                  const Point3& e,
+                                  const Keys5& keys);
+
 }  // namespace detail
 
 /// insphere under the perturbation: kPos when e is inside the perturbed circumball of a, b, c, d

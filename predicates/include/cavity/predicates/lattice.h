@@ -7,6 +7,7 @@
 #include "cavity/predicates/detail/orient3d_filter.h"
 #include "cavity/predicates/point.h"
 #include "cavity/predicates/sign.h"
+#include "cavity/predicates/stage.h"
 
 namespace cavity::predicates {
 
@@ -67,6 +68,41 @@ inline bool is_lattice_box(const Point3& lo, const Point3& hi) {
                                                        const Point3& d) {
     const double det = detail::orient3d_determinant(a, b, c, d);
     return static_cast<Sign>((det > 0.0) - (det < 0.0));
+}
+
+/// The magnitude below which a lattice's coordinates are small enough for
+/// orient3d_staged_on_lattice: orient3d's stage after the filter decides integers below it exactly
+/// (orient3d_slow, orient3d.cpp).
+inline constexpr double kLatticeStagedMagnitude = 0x1p50;
+
+/// True when every point of the box [lo, hi] has coordinates below kLatticeStagedMagnitude in
+/// magnitude.
+inline bool is_staged_lattice_box(const Point3& lo, const Point3& hi) {
+    return -kLatticeStagedMagnitude < lo.x && -kLatticeStagedMagnitude < lo.y &&
+           -kLatticeStagedMagnitude < lo.z && hi.x < kLatticeStagedMagnitude &&
+           hi.y < kLatticeStagedMagnitude && hi.z < kLatticeStagedMagnitude;
+}
+
+/// orient3d_staged's verdict, sign and deciding stage, for integer points of an exact lattice box
+/// with coordinates below kLatticeStagedMagnitude (an unchecked precondition), without its work
+/// after the filter: the counting engine's route on grids, whose exact zeros would otherwise take
+/// the adaptive stage's integer arithmetic. The filter is orient3d_staged's; what it leaves,
+/// orient3d_slow decides at kAdaptive by exact small-integer arithmetic, and its sign is the plain
+/// determinant's, exact here (orient3d_filter evaluates the same determinant).
+[[gnu::always_inline]] inline Verdict orient3d_staged_on_lattice(const Point3& a,
+                                                                 const Point3& b,
+                                                                 const Point3& c,
+                                                                 const Point3& d) {
+    const double det = detail::orient3d_determinant(a, b, c, d);
+    // The filter never certifies a zero (its test is |det| > bound), and zeros are most of what
+    // reaches here on a grid: they skip the filter's bound.
+    if (det == 0.0) {
+        return {Sign::kZero, Stage::kAdaptive};
+    }
+    if (const int s = detail::orient3d_filter(a, b, c, d)) {
+        return {static_cast<Sign>(s), Stage::kFilter};
+    }
+    return {det > 0.0 ? Sign::kPos : Sign::kNeg, Stage::kAdaptive};
 }
 
 /// Sign of det[p-e, |p-e|^2] over p = a..d (as insphere) for integer points of an exact lattice

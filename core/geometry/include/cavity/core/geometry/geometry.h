@@ -47,7 +47,9 @@ using predicates::WeightedPoint3;
 /// date by the appends), the plain double determinants are exact (predicates/lattice.h). The
 /// uncounted tests then take the sign of the plain determinant and, on a zero, go straight to the
 /// tie-break, whose cofactors are plain determinants too: no filter bound, no adaptive stage. The
-/// counted tests keep the staged route, so the counters' stages stay those of the predicates.
+/// counted tests count the stages of the predicates' staged route, but take the plain route where
+/// it gives the same counts: the tie-break counts its cofactors, not their stages, and orient3d's
+/// stage after its filter is known on a lattice of small integers (orient3d_staged_on_lattice).
 class Geometry {
 public:
     Geometry(std::vector<Point3> points,
@@ -141,6 +143,12 @@ public:
             if (lattice_) {
                 return predicates::orient3d_on_lattice(point(a), point(b), point(c), point(d));
             }
+        } else {
+            if (staged_lattice_) {
+                const auto verdict = orient3d_staged_on_lattice(a, b, c, d);
+                tally.count_predicate(PredicateKind::kOrient3d, verdict.stage);
+                return verdict.sign;
+            }
         }
         if (has_implicit()) [[unlikely]] {
             const auto verdict = orient3d_generic(a, b, c, d);
@@ -192,6 +200,12 @@ public:
         if constexpr (!T::kCounting) {
             if (lattice_) {
                 return orient3d_on_lattice_or_exact(a, b, c, d);
+            }
+        } else {
+            if (staged_lattice_) {
+                const auto verdict = orient3d_staged_on_lattice_or_staged(a, b, c, d);
+                tally.count_predicate(PredicateKind::kOrient3d, verdict.stage);
+                return verdict.sign;
             }
         }
         return orient3d(a, b, c, d, tally);
@@ -293,6 +307,18 @@ private:
                                       const Point3& b,
                                       const Point3& c,
                                       const Point3& d) const;
+    /// The counted tests' orient3d on a staged lattice, of four vertices (out of line, to keep
+    /// the counting engine's inlined code as small as the plain engine's): orient3d_staged's
+    /// verdict.
+    predicates::Verdict orient3d_staged_on_lattice(VertexId a,
+                                                   VertexId b,
+                                                   VertexId c,
+                                                   VertexId d) const;
+    /// The same of four points in the box, as orient3d_on_lattice_or_exact.
+    predicates::Verdict orient3d_staged_on_lattice_or_staged(const Point3& a,
+                                                             const Point3& b,
+                                                             const Point3& c,
+                                                             const Point3& d) const;
 
     /// Point v as the floating-point stage takes it (implicit geometries only).
     predicates::RoundedPoint rounded(VertexId v) const { return {points_[v], errors_[v]}; }
@@ -306,7 +332,7 @@ private:
     /// sound only for points in their box), and keeps lattice_ true only while p keeps the points
     /// a lattice.
     void widen_box(const Point3& p);
-    /// The static filters for the current box (exact insphere on a lattice).
+    /// The static filters for the current box (exact insphere on a lattice), and staged_lattice_.
     void make_static_filters();
 
     std::vector<Point3> points_;
@@ -316,6 +342,7 @@ private:
     std::vector<double> errors_;        // with exact_: max |exact - point| per point, bounded
     bool plain_ = true;                 // unweighted and no implicit point: the inline fast path
     bool lattice_ = false;              // plain_, integer points, exact lattice box (see the top)
+    bool staged_lattice_ = false;       // lattice_, coordinates below kLatticeStagedMagnitude
     Point3 box_lo_{};                   // bounding box of points_, when there are any
     Point3 box_hi_{};
     predicates::InsphereStaticFilter insphere_static_;  // for points in that box
