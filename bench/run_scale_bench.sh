@@ -18,7 +18,8 @@ csv="$out/scale.csv.tmp"
 echo "distribution,n,engine,threads,run,seconds,wall_seconds,tets,peak_rss_bytes,baseline_rss_bytes" > "$csv"
 "$build/bench/peers_bench" --dist cube --n "$n" --repeats 1 --only cavity >> "$csv"
 mv "$csv" "$out/scale.csv"
-mem_total=$(awk '/^MemTotal:/ {printf "%d", $2 * 1024}' /proc/meminfo)
+# %.0f, not %d: mawk's %d stops at 2^31 - 1, which read a 24 GiB machine as 2 GiB.
+mem_total=$(awk '/^MemTotal:/ {printf "%.0f", $2 * 1024}' /proc/meminfo)
 /usr/bin/python3 bench/scale_report.py "$out/scale.csv" "$mem_total" \
   "$(uptime | sed 's/.*load average: //')" --readme README.md > "$out/README.md"
 cat "$out/README.md"
