@@ -19,6 +19,7 @@
 #include "cavity/core/base/error.h"
 #include "cavity/core/cdt/cdt_carve.h"
 #include "cavity/core/cdt/cdt_regions.h"
+#include "cavity/core/cdt/cdt_vertex_insertion.h"
 #include "cavity/core/cdt/read_plc.h"
 #include "cavity/core/input/plc.h"
 #include "cavity/predicates/orient3d.h"
@@ -408,14 +409,58 @@ struct Reading {
     bool merge_coplanar_faces = true;  ///< with `surface`
 };
 
+/// The points to insert after the polygons (§5.7), as `cavity cdt --insert` does.
+struct Insertion {
+    bool given = false;  ///< `insert` was not None (it may still have no rows)
+    std::vector<Point3> points;
+    bool all_or_nothing = false;
+};
+
 /// Everything one CDT produces, computed without the GIL.
 struct Built {
     core::SurfaceReading surface;
     core::Cdt cdt;
     core::CarvedCdt domain;
+    /// Per row of the inserted points: its vertex index, or -1 when it was left out.
+    std::vector<std::int32_t> inserted;
+    /// The rows left out, each with core's reason.
+    std::vector<std::pair<std::size_t, std::string>> left_out;
 };
 
-Built build(core::Plc plc, const core::CdtOptions& options, bool convex_hull, Reading reading) {
+/// The CDT of `plc`, then the insertion's points in row order. A point that cannot be inserted
+/// (or repeats a vertex) is left out and recorded, or with all_or_nothing refuses the whole call.
+core::Cdt construct(core::Plc plc,
+                    const core::CdtOptions& options,
+                    const Insertion& insertion,
+                    Built& b) {
+    if (!insertion.given) {
+        // build_cdt validates its result exactly (validate_cdt) before returning it.
+        return core::build_cdt(std::move(plc), options);
+    }
+    core::LiveCdt live(std::move(plc), options);
+    b.inserted.assign(insertion.points.size(), -1);
+    for (std::size_t row = 0; row < insertion.points.size(); ++row) {
+        const core::CdtInsertion r = live.insert_vertex(insertion.points[row]);
+        if (r.inserted()) {
+            b.inserted[row] = static_cast<std::int32_t>(r.vertex);
+            continue;
+        }
+        if (insertion.all_or_nothing) {
+            throw core::Error("insert row " + std::to_string(row) + ": " + r.message +
+                              " (all_or_nothing=True: nothing returned)");
+        }
+        b.left_out.emplace_back(row, r.message);
+    }
+    // The constructor checked the CDT of the PLC; check again what the insertions made of it.
+    live.validate();
+    return live.snapshot();
+}
+
+Built build(core::Plc plc,
+            const core::CdtOptions& options,
+            bool convex_hull,
+            Reading reading,
+            const Insertion& insertion) {
     Built b;
     if (reading.surface) {
         // The surface check names degenerate faces (collinear corners, not flat) itself.
@@ -426,8 +471,7 @@ Built build(core::Plc plc, const core::CdtOptions& options, bool convex_hull, Re
         }
     }
     try {
-        // build_cdt validates its result exactly (validate_cdt) before returning it.
-        b.cdt = core::build_cdt(std::move(plc), options);
+        b.cdt = construct(std::move(plc), options, insertion, b);
     } catch (const core::Error& e) {
         // Core words its advice for the command line; here the switch is the keyword argument.
         std::string message = e.what();
@@ -462,13 +506,14 @@ public:
         const core::CdtOptions& options,
         bool with_regions,
         bool convex_hull,
-        Reading reading) {
+        Reading reading,
+        const Insertion& insertion) {
         const std::size_t polygons = plc.facets.size();
         const std::size_t input_points = plc.points.size();
         Built b;
         {
             py::gil_scoped_release nogil;
-            b = build(std::move(plc), options, convex_hull, reading);
+            b = build(std::move(plc), options, convex_hull, reading, insertion);
         }
         core::Cdt& cdt = b.cdt;
         const auto n = static_cast<py::ssize_t>(cdt.plc.points.size());
@@ -507,6 +552,15 @@ public:
         stats["rotary_steps"] = c.rotary_steps;
         stats["search_visited"] = c.search_visited;
         stats["certify_calls"] = c.certify_calls;
+        const auto& in = cdt.insertion;
+        stats["insert_attempts"] = in.attempts;
+        stats["inserted"] = in.inserted;
+        stats["insert_duplicates"] = in.duplicates;
+        stats["insert_not_star_shaped"] = in.refused_not_star_shaped;
+        stats["insert_through_cavity"] = in.refused_through_cavity;
+        stats["insert_not_delaunay"] = in.refused_not_delaunay;
+        stats["insert_on_polygon"] = in.on_polygon;
+        stats["insert_on_plc_edge"] = in.on_plc_edge;
         stats_ = stats;
 
         const auto m = static_cast<py::ssize_t>(b.domain.tets.size());
@@ -524,6 +578,29 @@ public:
         steiner_ = adopt(std::move(cdt.protection.inserted), {s});
         region_markers_ =
             with_regions ? py::object(adopt(std::move(b.domain.regions), {m})) : py::none();
+        if (!insertion.given) {
+            inserted_ = py::none();
+            left_out_ = py::none();
+            return;
+        }
+        const auto k = static_cast<py::ssize_t>(b.inserted.size());
+        inserted_ = adopt(std::move(b.inserted), {k});
+        py::list left_out;
+        for (const auto& [row, why] : b.left_out) {
+            left_out.append(py::make_tuple(row, why));
+        }
+        left_out_ = left_out;
+        if (!b.left_out.empty()) {
+            // Left out silently, a point would only show as a missing vertex much later.
+            const std::string warning =
+                std::to_string(b.left_out.size()) + " of " + std::to_string(k) +
+                " insert points left out, the first: row " +
+                std::to_string(b.left_out.front().first) + ": " + b.left_out.front().second +
+                " (CDT.left_out lists them all)";
+            if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) {
+                throw py::error_already_set();  // the warnings filter made it an error
+            }
+        }
     }
 
     py::object to_meshio() const {
@@ -558,6 +635,8 @@ public:
     py::array_t<std::int32_t> face_markers_;
     py::array_t<std::int32_t> steiner_;
     py::object region_markers_;
+    py::object inserted_;
+    py::object left_out_;
     py::dict stats_;
 };
 
@@ -571,20 +650,36 @@ Cdt make_cdt(const py::handle& points,
              bool protect,
              std::size_t max_protection_points,
              bool surface,
-             bool keep_faces) {
+             bool keep_faces,
+             const py::handle& insert,
+             bool all_or_nothing) {
     if (keep_faces && !surface) {
         throw py::value_error("keep_faces=True applies to surface=True only");
+    }
+    if (all_or_nothing && insert.is_none()) {
+        throw py::value_error("all_or_nothing=True applies to insert only");
+    }
+    Insertion insertion;
+    insertion.all_or_nothing = all_or_nothing;
+    if (!insert.is_none()) {
+        insertion.given = true;
+        const DoubleArray rows = require_rows(insert, "insert", 3);
+        const double* data = rows.data();
+        for (py::ssize_t r = 0; r < rows.shape(0); ++r) {
+            insertion.points.push_back({data[3 * r], data[3 * r + 1], data[3 * r + 2]});
+        }
     }
     core::Plc plc;
     plc.points = to_point_set(points, py::none());
     // Core prefixes messages with a non-empty source, as it does with a file name.
     plc.points.source.clear();
     const std::size_t n = plc.points.size();
-    if (max_protection_points >
-        static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()) - n) {
+    const auto int32_max = static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max());
+    if (max_protection_points > int32_max - n ||
+        insertion.points.size() > int32_max - n - max_protection_points) {
         throw py::value_error(
-            "max_protection_points: the points and the protecting points together must be "
-            "numbered by int32 indices");
+            "max_protection_points: the points, the protecting points and the insert points "
+            "together must be numbered by int32 indices");
     }
     plc.facets = facets_of(polygons, n);
     set_markers(markers, plc.facets);
@@ -612,7 +707,8 @@ Cdt make_cdt(const py::handle& points,
                core::CdtOptions{protect, max_protection_points},
                !regions.is_none(),
                convex_hull,
-               Reading{surface, !keep_faces});
+               Reading{surface, !keep_faces},
+               insertion);
 }
 
 }  // namespace
@@ -628,7 +724,8 @@ polygons are unions of ``faces``, and every face is constrained Delaunay.
 Attributes
 ----------
 points : (n', 3) float64
-    The input points, then the protecting (Steiner) points added with ``protect=True``.
+    The input points, then the protecting (Steiner) points added with ``protect=True``, then
+    the ``insert`` points that were inserted, in row order.
 simplices : (m, 4) int32
     Tetrahedra of the domain the polygons bound (of the whole convex hull with
     ``convex_hull=True``), minus the ``holes``, as row indices into ``points``, each with
@@ -638,14 +735,23 @@ faces : (f, 3) int32
 face_markers : (f,) int32
     The marker of the polygon each face belongs to (0 without ``markers``).
 steiner : (s,) int32
-    Indices into ``points`` of the protecting points, in insertion order (n to n' - 1).
+    Indices into ``points`` of the protecting points, in insertion order (n to n + s - 1).
 region_markers : (m,) int32 or None
     With ``regions``: the marker of the region holding each tetrahedron, 0 for none.
+inserted : (k,) int32 or None
+    With ``insert``: per row of it, the index into ``points`` of the vertex it became, or -1
+    when it was left out.
+left_out : list of (int, str) or None
+    With ``insert``: the rows left out, each with the reason (a vertex there already, or no CDT
+    of the PLC with the point added: the cavity is not star-shaped, a polygon, PLC edge or
+    vertex lies inside it, or a new face is not locally Delaunay).
 stats : dict
     Counts of the construction: points, input_points, protection_points, protection_rounds,
     polygons, warped_faces, merged_faces, merged_polygons (surface=True), tets (kept), removed_tets (carved away), faces, flips_23, flips_32, flips_44, events_queued, events_stale,
     events_held, region_tets, region_vertices, max_region_vertices, rotary_steps,
-    search_visited, certify_calls.
+    search_visited, certify_calls; of ``insert``: insert_attempts, inserted, insert_duplicates,
+    insert_not_star_shaped, insert_through_cavity, insert_not_delaunay, insert_on_polygon,
+    insert_on_plc_edge.
 npoints, nsimplex : int
     len(points), len(simplices).
 )doc")
@@ -661,6 +767,13 @@ npoints, nsimplex : int
                       &Cdt::region_markers_,
                       "(m,) int32 region marker per tetrahedron (0: no region), or None without "
                       "regions")
+        .def_readonly("inserted",
+                      &Cdt::inserted_,
+                      "(k,) int32 vertex index per insert row (-1: left out), or None without "
+                      "insert")
+        .def_readonly("left_out",
+                      &Cdt::left_out_,
+                      "list of (row, reason) of the insert rows left out, or None without insert")
         .def_readonly("stats", &Cdt::stats_, "dict: counts of protection and polygon insertion")
         .def_property_readonly("npoints", [](const Cdt& c) { return c.points_.shape(0); })
         .def_property_readonly("nsimplex", [](const Cdt& c) { return c.simplices_.shape(0); })
@@ -689,6 +802,8 @@ data "region" when regions were given. Raises ImportError when meshio is not ins
           py::arg("max_protection_points") = 100000,
           py::arg("surface") = false,
           py::arg("keep_faces") = false,
+          py::arg("insert") = py::none(),
+          py::arg("all_or_nothing") = false,
           R"doc(
 Constrained Delaunay tetrahedralization (CDT) of a piecewise linear complex (PLC).
 
@@ -744,6 +859,13 @@ surface : bool
     protecting points. ``stats`` counts warped_faces, merged_faces and merged_polygons.
 keep_faces : bool
     With surface=True: merge no faces (TetGen's -M), each face stays a polygon of its own.
+insert : (k, 3) array_like of float, optional
+    Points inserted after the polygons, in row order, each by vertex insertion into the CDT
+    (Cheng, Dey & Shewchuk §5.7), as ``cavity cdt --insert`` does: a point on a polygon or a PLC
+    edge splits it. A point that repeats a vertex, or whose insertion would leave no CDT, is
+    left out, listed in ``CDT.left_out`` with the reason, and a RuntimeWarning names the first.
+all_or_nothing : bool
+    With ``insert``: a point left out is a ValueError naming its row, and nothing is returned.
 
 Returns
 -------

@@ -535,6 +535,85 @@ def test_poly_fixture_same_mesh_as_the_cli(poly_cdt, tmp_path):
     assert np.array_equal(face[:, 1:4], c.faces) and np.array_equal(face[:, 4], c.face_markers)
 
 
+INSERT = REPOSITORY / "tests" / "cli" / "data" / "cdt_insert.xyz"
+
+
+def insert_fixture(**kwargs):
+    """cdt_insert.poly protected, in its convex hull, with the rows of cdt_insert.xyz inserted."""
+    if not POLY.exists() or not INSERT.exists():
+        pytest.skip("the fixture files are not here (tests run outside the repository)")
+    points, polygons, markers, segments = read_poly(POLY)
+    return cavity.cdt(points, polygons, markers=markers, segments=segments, protect=True,
+                      convex_hull=True, insert=np.loadtxt(INSERT, comments="#"), **kwargs)
+
+
+def test_insert_as_the_cli_inserts(tmp_path):
+    # Rows 2 and 3 would leave polygon triangle 8 10 12 inside the cavity, row 4 repeats row 0.
+    with pytest.warns(RuntimeWarning, match=r"3 of 7 insert points left out, the first: row 2: "
+                                            r"the vertex cannot be inserted: polygon triangle "
+                                            r"8 10 12 runs through the cavity"):
+        c = insert_fixture()
+    assert np.array_equal(c.inserted, [13, 14, -1, -1, -1, 15, 16])
+    assert [row for row, _ in c.left_out] == [2, 3, 4]
+    assert c.left_out[2][1] == "the point coincides with vertex 13"
+    assert np.array_equal(c.points[c.inserted[c.inserted >= 0]],
+                          np.loadtxt(INSERT, comments="#")[[0, 1, 5, 6]])
+    s = c.stats
+    assert (s["insert_attempts"], s["inserted"], s["insert_duplicates"]) == (7, 4, 1)
+    assert (s["insert_through_cavity"], s["insert_not_star_shaped"],
+            s["insert_not_delaunay"]) == (2, 0, 0)
+    assert c.npoints == 17 and np.array_equal(c.steiner, [12])
+    assert_positive(c)
+    executable = cavity_executable()
+    if executable is None:
+        pytest.skip("no `cavity` program (set CAVITY_EXECUTABLE)")
+    prefix = tmp_path / "out"
+    subprocess.run([executable, "cdt", str(POLY), "-o", str(prefix), "--protect", "--convex-hull",
+                    "--insert", str(INSERT), "--quiet"], check=True, stderr=subprocess.DEVNULL)
+    ele = np.loadtxt(f"{prefix}.ele", skiprows=1, dtype=np.int64, comments="#")
+    face = np.loadtxt(f"{prefix}.face", skiprows=1, dtype=np.int64, comments="#", ndmin=2)
+    node = np.loadtxt(f"{prefix}.node", skiprows=1, comments="#")
+    assert np.array_equal(node[:, 1:4], c.points)
+    assert np.array_equal(ele[:, 1:5], c.simplices)
+    assert np.array_equal(face[:, 1:4], c.faces) and np.array_equal(face[:, 4], c.face_markers)
+
+
+def test_insert_all_or_nothing_names_the_row():
+    with pytest.raises(ValueError, match=r"^insert row 2: the vertex cannot be inserted: .*"
+                                         r"\(all_or_nothing=True: nothing returned\)$"):
+        insert_fixture(all_or_nothing=True)
+
+
+def test_insert_on_a_polygon_splits_it():
+    # The cube's bottom face (z = 0) gets a vertex at its middle, the edge x = y = 0 one at its
+    # middle; both stay on the boundary, which keeps its area, and the volume stays 1.
+    c = cavity.cdt(CUBE, CUBE_QUADS, insert=[[0.5, 0.5, 0], [0, 0, 0.5], [0.25, 0.5, 0.75]])
+    assert np.array_equal(c.inserted, [8, 9, 10]) and c.left_out == []
+    assert (c.stats["insert_on_polygon"], c.stats["insert_on_plc_edge"]) == (2, 1)
+    assert_positive(c)
+    assert volumes(c).sum() == pytest.approx(1, abs=1e-15)
+    bottom = c.faces[np.all(c.points[c.faces][:, :, 2] == 0, axis=1)]
+    assert 8 in bottom and len(bottom) == 4
+
+
+def test_without_insert_nothing_is_reported():
+    c = cavity.cdt(CUBE, CUBE_QUADS)
+    assert c.inserted is None and c.left_out is None and c.stats["insert_attempts"] == 0
+    empty = cavity.cdt(CUBE, CUBE_QUADS, insert=np.empty((0, 3)))
+    assert empty.inserted.shape == (0,) and empty.left_out == []
+    assert np.array_equal(empty.simplices, c.simplices)
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({"all_or_nothing": True}, "all_or_nothing=True applies to insert only"),
+    ({"insert": [[0.5, 0.5]]}, r"insert must have shape \(n, 3\), got \(1, 2\)"),
+    ({"insert": [[0.5, 0.5, 0.5], [0.5, np.nan, 0.5]]}, "insert row 1 has a non-finite value"),
+])
+def test_insert_keyword_errors(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        cavity.cdt(CUBE, CUBE_QUADS, **kwargs)
+
+
 def l_prism_triangles():
     """The L prism of L_SHAPE as a triangle surface mesh: each cap a fan of 4 triangles from corner
     0, each side 2 triangles; outward."""
