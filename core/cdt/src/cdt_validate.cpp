@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <unordered_map>
 #include <utility>
 
 #include "box_grid.h"
@@ -187,36 +186,44 @@ private:
     std::uint32_t stamp_ = 0;
 };
 
+/// The sides found so far, by point: the sign, and which facet's plane it is for (index + 1; 0:
+/// none), so that each facet starts afresh without clearing and without a hash table of its own.
+struct SideMemo {
+    explicit SideMemo(std::size_t points) : facet(points, 0), sign(points, Sign::kZero) {}
+
+    std::vector<std::uint32_t> facet;
+    std::vector<Sign> sign;
+};
+
 /// The side of the facet's plane point v lies on: zero without a predicate for the facet's own
 /// corners, the commonest question near a facet and orient3d's most expensive answer.
 class FacetSide {
 public:
-    FacetSide(const Plc& plc, const PlcFacet& facet, const ExactPlane& plane)
-        : plc_(plc), plane_(plane) {
-        for (const auto& loop : facet.loops) {
-            corners_.insert(corners_.end(), loop.begin(), loop.end());
+    FacetSide(const Plc& plc, std::size_t index, const ExactPlane& plane, SideMemo& memo)
+        : plc_(plc), plane_(plane), memo_(memo), stamp_(static_cast<std::uint32_t>(index + 1)) {
+        for (const auto& loop : plc.facets[index].loops) {
+            for (std::uint32_t c : loop) {
+                memo_.facet[c] = stamp_;
+                memo_.sign[c] = Sign::kZero;
+            }
         }
-        std::sort(corners_.begin(), corners_.end());
     }
 
     Sign operator()(std::uint32_t v) const {
-        if (std::binary_search(corners_.begin(), corners_.end(), v)) {
-            return Sign::kZero;
-        }
         // Kept: the search around the facet asks of each vertex once per triangle around it, and
         // orient3d with an implicit point can take thousands of instructions.
-        const auto [it, made] = sides_.try_emplace(v, Sign::kZero);
-        if (made) {
-            it->second = plane_.side(generic_point(plc_.points, v));
+        if (memo_.facet[v] != stamp_) {
+            memo_.facet[v] = stamp_;
+            memo_.sign[v] = plane_.side(generic_point(plc_.points, v));
         }
-        return it->second;
+        return memo_.sign[v];
     }
 
 private:
     const Plc& plc_;
     const ExactPlane& plane_;
-    std::vector<std::uint32_t> corners_;
-    mutable std::unordered_map<std::uint32_t, Sign> sides_;
+    SideMemo& memo_;
+    std::uint32_t stamp_;
 };
 
 /// True when mesh triangle g lies in the facet's plane with its centroid in the facet's region.
@@ -321,6 +328,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
                                     VertexTriangles& around,
                                     ScanIndex& index_of_mesh,
                                     RationalPoints& rational,
+                                    SideMemo& sides,
                                     bool carved,
                                     Report& report) {
     const PlcFacet& facet = plc.facets[index];
@@ -336,7 +344,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         report.add(name + ": corners are collinear");
         return faces;
     }
-    const FacetSide side(plc, facet, *plane);
+    const FacetSide side(plc, index, *plane, sides);
     const FacetRegion region(plc, facet, *plane, &rational);
     if (!carved) {
         if (auto found = covering_faces(plc, facet, *plane, region, side, mesh, around, rational)) {
@@ -604,11 +612,12 @@ CdtValidation validate_cdt(const Plc& plc,
     VertexTriangles around(mesh.triangles, plc.points.size());
     ScanIndex index_of_mesh;
     RationalPoints rational(plc.points);
+    SideMemo side_memo(plc.points.size());
     // Sorted like the sides, so one walk along both finds the constrained ones.
     std::vector<Triangle> constrained;
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
-        for (const Triangle& g :
-             polygon_faces(plc, f, mesh, around, index_of_mesh, rational, carved, report)) {
+        for (const Triangle& g : polygon_faces(
+                 plc, f, mesh, around, index_of_mesh, rational, side_memo, carved, report)) {
             constrained.push_back(g);
         }
     }

@@ -285,6 +285,11 @@ std::vector<std::string> plc_violations(
         out.push_back(located_message(plc.source, std::nullopt, s));
         return out;
     }
+    return protected_plc_violations(plc);
+}
+
+std::vector<std::string> protected_plc_violations(const Plc& plc) {
+    std::vector<std::string> out;
     const std::vector<OwnedEdge> edges = owned_edges(plc);
     std::vector<Box> edge_boxes;
     edge_boxes.reserve(edges.size());
@@ -403,6 +408,13 @@ void throw_violations(const std::vector<std::string>& problems, const std::strin
 void require_valid_plc(const Plc& plc,
                        std::span<const std::array<std::uint32_t, 4>> delaunay_tets) {
     const std::vector<std::string> problems = plc_violations(plc, delaunay_tets);
+    if (!problems.empty()) {
+        throw_violations(problems, "the input is not a piecewise linear complex");
+    }
+}
+
+void require_valid_protected_plc(const Plc& plc) {
+    const std::vector<std::string> problems = protected_plc_violations(plc);
     if (!problems.empty()) {
         throw_violations(problems, "the input is not a piecewise linear complex");
     }

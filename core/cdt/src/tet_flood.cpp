@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "cavity/core/mesh/tetrahedron.h"
+#include "cavity/core/io/tet_adjacency.h"
 #include "cavity/predicates/generic_predicates.h"
 #include "exact_plane.h"
 
@@ -31,60 +31,64 @@ std::optional<std::array<bool, 4>> zero_faces(const PointSet& pts, const Tet& t,
 
 }  // namespace
 
-std::size_t TetFlood::KeyHash::operator()(const Key& k) const {
-    std::uint64_t h = k[0];
-    h = h * 0x9E37'79B9'7F4A'7C15ull ^ k[1];
-    h = h * 0x9E37'79B9'7F4A'7C15ull ^ k[2];
-    return static_cast<std::size_t>(h ^ (h >> 29));
-}
-
-TetFlood::Key TetFlood::facet_key(const Tet& t, int f) {
-    const auto& s = kFacetVertices[static_cast<std::size_t>(f)];
-    Key k{t[static_cast<std::size_t>(s[0])],
-          t[static_cast<std::size_t>(s[1])],
-          t[static_cast<std::size_t>(s[2])]};
-    std::sort(k.begin(), k.end());
-    return k;
-}
-
 TetFlood::TetFlood(std::span<const Tet> tets, std::span<const CdtFace> faces)
     : tets_(tets), reached_(tets.size(), false) {
-    for (const CdtFace& f : faces) {
-        Key k = f.v;
-        std::sort(k.begin(), k.end());
-        walls_.insert(k);
+    std::size_t point_count = 0;
+    for (const Tet& t : tets) {
+        point_count = std::max(point_count, std::size_t{*std::max_element(t.begin(), t.end())} + 1);
     }
-    sides_.reserve(2 * tets.size());
-    for (std::uint32_t t = 0; t < tets.size(); ++t) {
-        for (int f = 0; f < 4; ++f) {
-            auto [it, fresh] = sides_.try_emplace(facet_key(tets[t], f), std::array{t, t});
-            if (!fresh) {
-                it->second[1] = t;
+    across_ = match_facets(tets, point_count);
+    // A wall is found among the tetrahedra at its corner with the fewest: a counting sort of the
+    // tetrahedra by vertex, then a short scan per polygon triangle.
+    std::vector<std::uint32_t> begin(point_count + 1, 0);
+    for (const Tet& t : tets) {
+        for (std::uint32_t v : t) {
+            ++begin[v + 1];
+        }
+    }
+    for (std::size_t v = 1; v < begin.size(); ++v) {
+        begin[v] += begin[v - 1];
+    }
+    std::vector<std::uint32_t> incident(begin.back());
+    {
+        std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
+        for (std::uint32_t t = 0; t < tets.size(); ++t) {
+            for (std::uint32_t v : tets[t]) {
+                incident[next[v]++] = t;
+            }
+        }
+    }
+    const auto degree = [&](std::uint32_t v) { return begin[v + 1] - begin[v]; };
+    for (const CdtFace& face : faces) {
+        const auto [a, b, c] = face.v;
+        if (std::max({a, b, c}) >= point_count) {
+            continue;  // a corner on no tetrahedron: no facet to block
+        }
+        const std::uint32_t scan = std::min(
+            {a, b, c}, [&](std::uint32_t u, std::uint32_t w) { return degree(u) < degree(w); });
+        for (std::uint32_t k = begin[scan]; k < begin[scan + 1]; ++k) {
+            const std::uint32_t t = incident[k];
+            const Tet& tet = tets[t];
+            // The facet is opposite the one slot whose vertex is not a corner of the face.
+            int corners = 0;
+            std::size_t outside = 0;
+            for (std::size_t s = 0; s < 4; ++s) {
+                const bool corner = tet[s] == a || tet[s] == b || tet[s] == c;
+                corners += corner ? 1 : 0;
+                outside = corner ? outside : s;
+            }
+            if (corners == 3) {
+                across_[4 * std::size_t{t} + outside] = kWall;
             }
         }
     }
 }
 
-std::optional<std::uint32_t> TetFlood::across(std::uint32_t t, int f) const {
-    const Key k = facet_key(tets_[t], f);
-    if (walls_.contains(k)) {
-        return std::nullopt;
-    }
-    const auto& two = sides_.at(k);
-    const std::uint32_t other = two[0] == t ? two[1] : two[0];
-    if (other == t) {
-        return std::nullopt;
-    }
-    return other;
-}
-
 std::vector<std::uint32_t> TetFlood::open_hull_tets() const {
     std::vector<std::uint32_t> seeds;
     for (std::uint32_t t = 0; t < tets_.size(); ++t) {
-        for (int f = 0; f < 4; ++f) {
-            const Key k = facet_key(tets_[t], f);
-            const auto& two = sides_.at(k);
-            if (two[0] == two[1] && !walls_.contains(k)) {
+        for (std::size_t f = 0; f < 4; ++f) {
+            if (across_[4 * std::size_t{t} + f] == kOpen) {
                 seeds.push_back(t);
                 break;
             }
@@ -103,15 +107,15 @@ std::optional<std::uint32_t> TetFlood::locate(const PointSet& pts, const Point3&
 }
 
 bool TetFlood::on_wall(const PointSet& pts, const Point3& p) const {
-    for (const Tet& t : tets_) {
-        const auto zero = zero_faces(pts, t, p);
+    for (std::size_t t = 0; t < tets_.size(); ++t) {
+        const auto zero = zero_faces(pts, tets_[t], p);
         if (!zero) {
             continue;
         }
         // p is in the closed tetrahedron, so it lies on facet f exactly when replacing the
         // vertex opposite f by p leaves the volume zero.
-        for (int f = 0; f < 4; ++f) {
-            if ((*zero)[static_cast<std::size_t>(f)] && walls_.contains(facet_key(t, f))) {
+        for (std::size_t f = 0; f < 4; ++f) {
+            if ((*zero)[f] && across_[4 * t + f] == kWall) {
                 return true;
             }
         }

@@ -8,8 +8,6 @@
 #include <cstdint>
 #include <optional>
 #include <span>
-#include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include "cavity/core/base/handedness.h"
@@ -20,6 +18,7 @@ namespace cavity::core {
 class TetFlood {
 public:
     /// `tets` with positive volume, as Cdt::tets; `faces` the polygon triangles (the walls).
+    /// \throws Error when a triangle has more than two tetrahedra (not a manifold).
     TetFlood(std::span<const Tet> tets, std::span<const CdtFace> faces);
 
     /// Marks as reached every tetrahedron reachable from `seed` across triangles that are not
@@ -31,16 +30,16 @@ public:
             return;
         }
         reached_[seed] = true;
-        std::vector<std::uint32_t> stack{seed};
-        while (!stack.empty()) {
-            const std::uint32_t t = stack.back();
-            stack.pop_back();
+        stack_.assign(1, seed);
+        while (!stack_.empty()) {
+            const std::uint32_t t = stack_.back();
+            stack_.pop_back();
             visit(t);
-            for (int f = 0; f < 4; ++f) {
-                const std::optional<std::uint32_t> other = across(t, f);
-                if (other && !reached_[*other]) {
-                    reached_[*other] = true;
-                    stack.push_back(*other);
+            for (std::size_t f = 0; f < 4; ++f) {
+                const std::int32_t other = across_[4 * std::size_t{t} + f];
+                if (other >= 0 && !reached_[static_cast<std::uint32_t>(other)]) {
+                    reached_[static_cast<std::uint32_t>(other)] = true;
+                    stack_.push_back(static_cast<std::uint32_t>(other));
                 }
             }
         }
@@ -59,21 +58,16 @@ public:
     bool on_wall(const PointSet& pts, const Point3& p) const;
 
 private:
-    using Key = std::array<std::uint32_t, 3>;
-
-    struct KeyHash {
-        std::size_t operator()(const Key& k) const;
-    };
-
-    static Key facet_key(const Tet& t, int f);
-    /// The tetrahedron across facet f of t, or none when that facet is a wall or on the boundary.
-    std::optional<std::uint32_t> across(std::uint32_t t, int f) const;
+    /// across_ entries that are no tetrahedron: a wall, or a boundary triangle in no polygon.
+    static constexpr std::int32_t kWall = -2;
+    static constexpr std::int32_t kOpen = -1;
 
     std::span<const Tet> tets_;
-    std::unordered_set<Key, KeyHash> walls_;
-    /// Each triangle's one or two tetrahedra (one: both entries equal).
-    std::unordered_map<Key, std::array<std::uint32_t, 2>, KeyHash> sides_;
+    /// across_[4t + f]: the tetrahedron across the facet opposite slot f of t, or kWall, or
+    /// kOpen. Read off one facet matching (no hash of every triangle, no lookups per step).
+    std::vector<std::int32_t> across_;
     std::vector<bool> reached_;
+    std::vector<std::uint32_t> stack_;  ///< reused by every fill
 };
 
 }  // namespace cavity::core

@@ -315,6 +315,27 @@ TEST(PlcValidity, EdgeViolationsOnALatticeInIndexOrder) {
     EXPECT_EQ(edge_violations(plc, asked), expected);
 }
 
+TEST(PlcValidity, ProtectedEntryReportsTheSame) {
+    // build_cdt finds the edges protected itself, then skips that search in plc_violations: the
+    // same violations, in the same order, whether or not the PLC is valid.
+    Plc crossed = cube_with_square();
+    crossed.points.points.push_back({1.5, 2, 1});
+    crossed.points.points.push_back({2, 1.5, 3});
+    crossed.segments.push_back({12, 13});
+    for (Plc plc : {make_plc(cube_points(), cube_sides()), cube_with_square(), crossed}) {
+        protect_edges(plc, 10000);
+        const auto tets = delaunay(plc);
+        ASSERT_TRUE(unprotected_edges(plc, tets).empty());
+        EXPECT_EQ(protected_plc_violations(plc), plc_violations(plc, tets));
+    }
+    protect_edges(crossed, 10000);
+    EXPECT_EQ(protected_plc_violations(crossed).size(), 1u);
+    EXPECT_THROW(require_valid_protected_plc(crossed), Error);
+    Plc square = cube_with_square();
+    protect_edges(square, 10000);
+    EXPECT_NO_THROW(require_valid_protected_plc(square));
+}
+
 TEST(PlcValidity, PreconditionIsChecked) {
     Plc plc = make_plc(cube_points(), cube_sides());
     plc.points.points.push_back({2, 2, 2.25});  // in the diametral ball of the diagonal 1-7

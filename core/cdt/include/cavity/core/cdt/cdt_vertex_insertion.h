@@ -84,7 +84,8 @@ public:
     /// The solid tetrahedra, 0-based, with positive right-hand volume (handedness.h).
     std::vector<std::array<std::uint32_t, 4>> tets() const;
 
-    /// Checks the whole mesh from outside (validate_cdt on plc(), check_complex on the storage).
+    /// Checks the whole mesh from outside (validate_cdt on plc(), which rebuilds the complex from
+    /// the tetrahedra and checks it); the storage's own complex only in the expensive-check build.
     /// \throws Error ("internal error: ... not a CDT") listing the problems.
     void validate() const;
 

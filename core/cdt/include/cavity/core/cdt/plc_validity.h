@@ -38,6 +38,10 @@ namespace cavity::core {
 std::vector<std::string> plc_violations(
     const Plc& plc, std::span<const std::array<std::uint32_t, 4>> delaunay_tets);
 
+/// plc_violations of a PLC whose edges the caller has found among the Delaunay edges of its points
+/// (the precondition): the same checks without finding them again.
+std::vector<std::string> protected_plc_violations(const Plc& plc);
+
 /// The violations that keep the given PLC edges from ever being protected: a PLC point inside one
 /// of them, or a PLC edge crossing one of them at a point interior to both (exact; no Delaunay
 /// triangulation needed). Checked by protect_edges on the unprotected edges before it splits them.
@@ -47,6 +51,9 @@ std::vector<std::string> edge_violations(const Plc& plc,
 /// plc_violations, as an exception.
 /// \throws Error listing the first violations and their number.
 void require_valid_plc(const Plc& plc, std::span<const std::array<std::uint32_t, 4>> delaunay_tets);
+
+/// protected_plc_violations, as an exception. \throws Error as require_valid_plc.
+void require_valid_protected_plc(const Plc& plc);
 
 /// edge_violations, as an exception. \throws Error listing the first violations.
 void require_edges_meet_properly(const Plc& plc,
