@@ -706,6 +706,116 @@ TEST(ExactPlaneSide, AgreesWithTheRationalOffset) {
     }
 }
 
+TEST(ExactPlaneSide, InputCornersAmongImplicitPointsGiveTheRationalPlane) {
+    // Facets of a PLC with implicit points whose loops start with repeated and collinear corners,
+    // input or implicit, in every exponent range: of_facet decides a triple by exact signs on
+    // input points (its own, or the ends of segments its split points are inside) when it can,
+    // and in rationals otherwise. The oracle is the first non-collinear triple found in
+    // rationals, and the side of every point must be its rational offset's sign (the same plane,
+    // with the same orientation).
+    Random random(20261127);
+    const auto pick = [&](int n) {
+        return static_cast<int>(random.below(static_cast<unsigned>(n)));
+    };
+    int planes = 0;
+    int collinear = 0;
+    for (const int exponent : {-1060, -1000, -300, 0, 300, 960}) {
+        for (int trial = 0; trial < 60; ++trial) {
+            const auto scaled = [&](int x, int y, int z) {
+                return Point3{
+                    std::ldexp(x, exponent), std::ldexp(y, exponent), std::ldexp(z, exponent)};
+            };
+            // Points o + s u + t v (+ k w off the plane) with small integers: exact doubles.
+            const std::array<int, 3> u{pick(5) - 2, pick(5) - 2, pick(3)};
+            const std::array<int, 3> v{pick(5) - 2, pick(3) - 1, pick(5) - 2};
+            const std::array<int, 3> w{pick(3) - 1, pick(3) - 1, 1};
+            const auto at = [&](int s, int t, int k) {
+                return scaled(s * u[0] + t * v[0] + k * w[0],
+                              s * u[1] + t * v[1] + k * w[1],
+                              s * u[2] + t * v[2] + k * w[2]);
+            };
+            Plc plc;
+            const auto add = [&](const predicates::GenericPoint3& g) {
+                plc.points.exact.push_back(g);
+                plc.points.points.push_back(rounded_point(g));
+                return static_cast<std::uint32_t>(plc.points.exact.size() - 1);
+            };
+            std::vector<std::uint32_t> loop;
+            loop.push_back(add(at(0, 0, 0)));
+            for (int k = 0; k < 6; ++k) {
+                // Repeats of the first corner, corners on the line along u, points of segments
+                // from the first corner (either end, inside or beyond) or between others, on
+                // that line or off it, and corners anywhere in the plane.
+                const int kind = pick(6);
+                const int s = pick(5) - 2;
+                const int t = pick(5) - 2;
+                const std::array<std::array<double, 2>, 4> parameters{
+                    {{1, 3}, {-1, -3}, {2, 3}, {4, 3}}};
+                const auto& [numerator, denominator] =
+                    parameters[static_cast<std::size_t>(pick(4))];
+                if (kind == 0) {
+                    loop.push_back(add(at(0, 0, 0)));
+                } else if (kind == 1) {
+                    loop.push_back(add(at(s, 0, 0)));
+                } else if (kind == 2 || kind == 3) {
+                    const Point3 end = at(s, kind == 2 ? 0 : t, 0);
+                    const bool first_end = pick(2) == 0;
+                    loop.push_back(
+                        add(*predicates::segment_parameter_point(first_end ? at(0, 0, 0) : end,
+                                                                 first_end ? end : at(0, 0, 0),
+                                                                 numerator,
+                                                                 denominator)));
+                } else if (kind == 4) {
+                    loop.push_back(add(*predicates::segment_parameter_point(
+                        at(s, pick(2) * t, 0), at(t, pick(3) - 1, 0), numerator, denominator)));
+                } else {
+                    loop.push_back(add(at(s, t, 0)));
+                }
+            }
+            std::vector<std::uint32_t> off;
+            for (int k = 0; k < 8; ++k) {
+                off.push_back(add(at(pick(5) - 2, pick(5) - 2, pick(5) - 2)));
+            }
+            off.push_back(
+                add(*predicates::segment_parameter_point(at(1, 0, 1), at(0, 1, -1), 1, 3)));
+            PlcFacet facet;
+            facet.loops = {loop};
+            plc.facets = {facet};
+            // The oracle: the first triple of corners with a non-zero rational normal.
+            std::optional<std::pair<ExactPoint, ExactPoint>> expected;
+            const ExactPoint a = exact_point(plc.points, loop[0]);
+            for (std::size_t i = 1; i < loop.size() && !expected; ++i) {
+                const ExactPoint b = exact_point(plc.points, loop[i]);
+                for (std::size_t j = i + 1; j < loop.size() && !expected && b != a; ++j) {
+                    const ExactPoint n =
+                        cross(minus(b, a), minus(exact_point(plc.points, loop[j]), a));
+                    if (!is_zero(n)) {
+                        expected.emplace(a, n);
+                    }
+                }
+            }
+            const auto plane = ExactPlane::of_facet(plc, plc.facets[0]);
+            ASSERT_EQ(plane.has_value(), expected.has_value()) << exponent << " " << trial;
+            if (!plane) {
+                ++collinear;
+                continue;
+            }
+            ++planes;
+            const ExactPoint& n = expected->second;
+            EXPECT_NE(n[static_cast<std::size_t>(plane->dropped_axis())], 0);
+            for (std::uint32_t i = 0; i < plc.points.exact.size(); ++i) {
+                const Rational d = dot(n, minus(exact_point(plc.points, i), expected->first));
+                const int sign = d > 0 ? 1 : d < 0 ? -1 : 0;
+                EXPECT_EQ(static_cast<int>(plane->side(plc.points.exact[i])), sign)
+                    << exponent << " " << trial << " point " << i;
+                EXPECT_EQ(plane->offset(exact_point(plc.points, i)).sign(), sign);
+            }
+        }
+    }
+    EXPECT_GT(planes, 200);
+    EXPECT_GT(collinear, 5);
+}
+
 /// a + t (b - a) in rational arithmetic step by step, t = numerator / denominator or, for a line
 /// and a plane, n . (p - a) / n . (b - a): the definition, against exact_point's integers.
 ExactPoint point_by_definition(const predicates::GenericPoint3& g) {
