@@ -557,6 +557,12 @@ Rational ExactPlane::offset(const ExactPoint& p) const {
 }
 
 predicates::Sign ExactPlane::explicit_side(const Point3& p) const {
+    // Most points asked about are the facet's own corners, or the ends of split points on its
+    // sides, and the three corners asked most are these: a zero orient3d is its dearest answer
+    // (the exact stage), which repeating a point makes plain.
+    if (same(p, explicit_[0]) || same(p, explicit_[1]) || same(p, explicit_[2])) {
+        return predicates::Sign::kZero;
+    }
     const predicates::Sign s =
         opposite(predicates::orient3d(explicit_[0], explicit_[1], explicit_[2], p));
     return explicit_sign_ > 0 ? s : opposite(s);
