@@ -218,51 +218,19 @@ public:
     /// vertex_star looks each one up in the list, quadratic in the star, and the stars of the
     /// vertices on long split segments hold hundreds of tetrahedra.
     std::vector<TetId> star(std::uint32_t i) {
-        const ArrayStorage& storage = dt_.storage();
-        const VertexId v = vertex_[i];
-        if (found_.size() < storage.capacity()) {
-            found_.resize(storage.capacity(), 0);
-        }
-        ++search_;
-        return vertex_star(storage, v, [&](const std::vector<TetId>&, TetId t) {
-            return std::exchange(found_[t], search_) != search_;
-        });
+        return vertex_star(dt_.storage(), vertex_[i], first_reach());
     }
 
     /// star(i), or nullopt when point j is a vertex of one of its tetrahedra (ij is an edge): the
-    /// search stops at the first such tetrahedron, where most pieces asked about are edges. The
-    /// same breadth-first search as vertex_star, so a star returned is in star(i)'s order.
+    /// search stops at the first such tetrahedron, where most pieces asked about are edges. A
+    /// star returned is in star(i)'s order.
     std::optional<std::vector<TetId>> star_unless_edge(std::uint32_t i, std::uint32_t j) {
         const ArrayStorage& storage = dt_.storage();
-        const VertexId v = vertex_[i];
         const VertexId w = vertex_[j];
-        if (found_.size() < storage.capacity()) {
-            found_.resize(storage.capacity(), 0);
-        }
-        ++search_;
-        std::vector<TetId> star;
-        const TetId start = storage.tet_at_vertex(v);
-        if (start == kNoTet) {
-            return star;
-        }
-        found_[start] = search_;
-        star.push_back(start);
-        for (std::size_t k = 0; k < star.size(); ++k) {
-            const TetVertices& x = storage.vertices(star[k]);
-            if (std::find(x.begin(), x.end(), w) != x.end()) {
-                return std::nullopt;
-            }
-            for (int f = 0; f < 4; ++f) {
-                if (x[static_cast<std::size_t>(f)] == v) {
-                    continue;  // the facet opposite v leaves the star
-                }
-                const HalfFacet h = storage.adjacent(star[k], f);
-                if (h != kNoHalfFacet && std::exchange(found_[tet_of(h)], search_) != search_) {
-                    star.push_back(tet_of(h));
-                }
-            }
-        }
-        return star;
+        return vertex_star_unless(storage, vertex_[i], first_reach(), [&](TetId t) {
+            const TetVertices& x = storage.vertices(t);
+            return std::find(x.begin(), x.end(), w) != x.end();
+        });
     }
 
     /// Inserts the point with index point_count(), exactly `exact`, rounded `rounded`.
@@ -366,6 +334,25 @@ public:
     }
 
 private:
+    /// vertex_star's first_reach for one search: a tetrahedron is reached for the first time when
+    /// its stamp is not this search's.
+    struct FirstReach {
+        std::vector<std::uint64_t>& found;
+        std::uint64_t search;
+
+        bool operator()(const std::vector<TetId>&, TetId t) const {
+            return std::exchange(found[t], search) != search;
+        }
+    };
+
+    /// A fresh search's FirstReach.
+    FirstReach first_reach() {
+        if (found_.size() < dt_.storage().capacity()) {
+            found_.resize(dt_.storage().capacity(), 0);
+        }
+        return {found_, ++search_};
+    }
+
     DelaunayTriangulation dt_;
     std::vector<VertexId> vertex_;      ///< by point index
     std::vector<std::uint64_t> found_;  ///< by tetrahedron: the last star search that found it

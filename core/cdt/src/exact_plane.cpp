@@ -341,6 +341,11 @@ predicates::Sign normal_sign(const Point3& a, const Point3& b, const Point3& c, 
     return opposite(predicates::orient3d(flat(a), flat(b), flat(c), {0.0, 0.0, 1.0}));
 }
 
+/// p == q coordinate by coordinate.
+bool same(const Point3& p, const Point3& q) {
+    return p.x == q.x && p.y == q.y && p.z == q.z;
+}
+
 /// For three input points: the axis to drop (see dropped_axis), or nullopt when they are
 /// collinear. Decided by exact signs, without rationals; the floating-point normal only orders the
 /// candidate axes (any axis with a non-zero component projects the plane one-to-one).
@@ -454,14 +459,72 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
         }
         return std::nullopt;
     }
-    const ExactPoint a = exact_point(plc.points, corners[0]);
+    // Some points are implicit: most are split points of loop sides, strictly inside a segment
+    // between input points, and a triple is decided from input points with the same exact signs
+    // whenever the segments allow (below); rationals are made only for the other triples, and a
+    // corner's once. Building every facet's plane in rationals cost 0.90 G instructions on
+    // homer, 4.0 G on cheese.
+    const auto input = [&](std::size_t k) {
+        return std::get_if<Point3>(&plc.points.exact[corners[k]]);
+    };
+    std::vector<std::optional<ExactPoint>> rational(corners.size());
+    const auto exact = [&](std::size_t k) -> const ExactPoint& {
+        if (!rational[k]) {
+            rational[k].emplace(exact_point(plc.points, corners[k]));
+        }
+        return *rational[k];
+    };
+    const Point3* a = input(0);
+    // Corner k as a point strictly inside a segment uv of input points, u != v.
+    const auto inside = [&](std::size_t k) -> const predicates::SegmentParameterPoint* {
+        const auto* s =
+            std::get_if<predicates::SegmentParameterPoint>(&plc.points.exact[corners[k]]);
+        if (s == nullptr || same(s->a, s->b)) {
+            return nullptr;
+        }
+        const double n = s->numerator;
+        const double d = s->denominator;
+        return (d > 0 && n > 0 && n < d) || (d < 0 && n < 0 && n > d) ? s : nullptr;
+    };
+    // An input point p with corner i - a = lambda (p - a), lambda > 0 (so p != a): corner i
+    // itself, or the far end of a segment from a that it is inside. Null when there is none.
+    const auto ray = [&](std::size_t i) -> const Point3* {
+        if (const Point3* b = input(i)) {
+            return same(*a, *b) ? nullptr : b;
+        }
+        if (const auto* s = inside(i)) {
+            return same(*a, s->a) ? &s->b : same(*a, s->b) ? &s->a : nullptr;
+        }
+        return nullptr;
+    };
     for (std::size_t i = 1; i < corners.size(); ++i) {
-        const ExactPoint b = exact_point(plc.points, corners[i]);
-        if (b == a) {
-            continue;
+        const Point3* b = a != nullptr ? ray(i) : nullptr;
+        if (b == nullptr && exact(i) == exact(0)) {
+            continue;  // a repeat of the first corner (a ray's point differs from a)
         }
         for (std::size_t j = i + 1; j < corners.size(); ++j) {
-            const ExactPoint n = cross(minus(b, a), minus(exact_point(plc.points, corners[j]), a));
+            if (b != nullptr) {
+                // (corner i - a) x (corner j - a) = lambda (b - a) x (corner j - a): for a corner
+                // j inside segment uv, (1 - t)(b - a) x (u - a) + t (b - a) x (v - a), which is a
+                // positive multiple of one term when the other end is on line ab.
+                const Point3* c = input(j);
+                const auto* s = c == nullptr ? inside(j) : nullptr;
+                if (s != nullptr) {
+                    const bool u_on = !drop_axis(*a, *b, s->a);
+                    const bool v_on = !drop_axis(*a, *b, s->b);
+                    c = u_on && v_on ? nullptr : u_on ? &s->b : v_on ? &s->a : nullptr;
+                    if (u_on && v_on) {
+                        continue;  // corner j is on line ab
+                    }
+                }
+                if (c != nullptr) {
+                    if (const auto drop = drop_axis(*a, *b, *c)) {
+                        return make(i, j, *drop);
+                    }
+                    continue;
+                }
+            }
+            const ExactPoint n = cross(minus(exact(i), exact(0)), minus(exact(j), exact(0)));
             if (!is_zero(n)) {
                 int drop = 2;
                 for (int k = 0; k < 3; ++k) {
@@ -471,7 +534,7 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
                     }
                 }
                 ExactPlane plane = make(i, j, drop);
-                plane.rational_.emplace(a, n);
+                plane.rational_.emplace(exact(0), n);
                 return plane;
             }
         }
@@ -494,6 +557,12 @@ Rational ExactPlane::offset(const ExactPoint& p) const {
 }
 
 predicates::Sign ExactPlane::explicit_side(const Point3& p) const {
+    // Most points asked about are the facet's own corners, or the ends of split points on its
+    // sides, and the three corners asked most are these: a zero orient3d is its dearest answer
+    // (the exact stage), which repeating a point makes plain.
+    if (same(p, explicit_[0]) || same(p, explicit_[1]) || same(p, explicit_[2])) {
+        return predicates::Sign::kZero;
+    }
     const predicates::Sign s =
         opposite(predicates::orient3d(explicit_[0], explicit_[1], explicit_[2], p));
     return explicit_sign_ > 0 ? s : opposite(s);

@@ -81,6 +81,15 @@ private:
     /// Whether left-right edge ab (side(a) < 0 < side(b)) crosses h inside the region.
     bool edge_crosses_region(VertexId a, VertexId b);
 
+    /// face_in_region for a facet whose region is a triangle of input points (triangle_corners_),
+    /// by orientations of the face's vertices against the triangle's sides; nullopt when they
+    /// leave it open (every vertex on the line of one side) and the centroid must decide.
+    std::optional<bool> face_in_triangle(std::span<const VertexId> on);
+
+    /// Where a vertex on h lies against triangle_corners_: bit i set when it is on the line of
+    /// side i (corners i and i + 1), bit 3 when it is strictly beyond some side.
+    std::uint8_t triangle_position(VertexId v);
+
     const Geometry& geometry_;
     const Plc& plc_;
     const PlcFacet& facet_;
@@ -123,6 +132,15 @@ private:
     /// The same for a triangle whose sides edge protection split (split_triangle.h): its three
     /// corners, or nullopt.
     std::optional<std::array<predicates::GenericPoint3, 3>> split_triangle_;
+    /// The region's triangle when it is one with input corners (a triangle, or a split one whose
+    /// corners are input points), with a point off h: orient3d of two corners, a vertex on h and
+    /// that point tells the vertex's side of the line through the two, in h, without the
+    /// vertex's rational coordinates. `triangle_turn_` is the sign of orient3d of the corners
+    /// and that point: the sign of the strict inside of every side.
+    std::optional<std::array<Point3, 3>> triangle_corners_;
+    Point3 off_h_{};
+    int triangle_turn_ = 0;
+    std::unordered_map<VertexId, std::uint8_t> triangle_positions_;
     std::vector<std::array<VertexId, 2>> sides_;
     std::set<std::array<VertexId, 2>> side_set_;
     std::set<VertexId> corners_;

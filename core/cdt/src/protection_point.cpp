@@ -168,13 +168,16 @@ std::optional<Point3> protection_point(
         return cuts[i + 1] < aim ? aim - cuts[i + 1] : cuts[i] - aim;
     };
     std::vector<std::size_t> pieces;
+    // Each piece's distance once: the sort compared rationals made afresh on every comparison.
+    std::vector<Rational> distances(cuts.size());
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
         if (window_lo <= cuts[i] && cuts[i + 1] <= window_hi) {
             pieces.push_back(i);
+            distances[i] = distance(i);
         }
     }
     std::stable_sort(pieces.begin(), pieces.end(), [&](std::size_t i, std::size_t j) {
-        return distance(i) < distance(j);
+        return distances[i] < distances[j];
     });
     for (std::size_t i : pieces) {
         const Rational lo = cuts[i];

@@ -1,6 +1,7 @@
 // The PLC itself: validity (how polygons, segments and vertices meet), TetGen's hole rule for facet
 // regions, protection points on edges with decimal coordinates, and ids in messages numbered as
 // the file numbers them.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <numeric>
@@ -21,6 +22,7 @@
 #include "plc_builders.h"
 // White-box: the region rule is internal to the core.
 #include "../../../core/cdt/src/exact_plane.h"
+#include "../../../core/cdt/src/polygon_region.h"
 #include "../../../core/cdt/src/split_triangle.h"
 
 namespace cavity::core {
@@ -727,6 +729,116 @@ TEST(ExactPlaneSide, AgreesWithTheRationalOffset) {
     }
 }
 
+TEST(ExactPlaneSide, InputCornersAmongImplicitPointsGiveTheRationalPlane) {
+    // Facets of a PLC with implicit points whose loops start with repeated and collinear corners,
+    // input or implicit, in every exponent range: of_facet decides a triple by exact signs on
+    // input points (its own, or the ends of segments its split points are inside) when it can,
+    // and in rationals otherwise. The oracle is the first non-collinear triple found in
+    // rationals, and the side of every point must be its rational offset's sign (the same plane,
+    // with the same orientation).
+    Random random(20261127);
+    const auto pick = [&](int n) {
+        return static_cast<int>(random.below(static_cast<unsigned>(n)));
+    };
+    int planes = 0;
+    int collinear = 0;
+    for (const int exponent : {-1060, -1000, -300, 0, 300, 960}) {
+        for (int trial = 0; trial < 60; ++trial) {
+            const auto scaled = [&](int x, int y, int z) {
+                return Point3{
+                    std::ldexp(x, exponent), std::ldexp(y, exponent), std::ldexp(z, exponent)};
+            };
+            // Points o + s u + t v (+ k w off the plane) with small integers: exact doubles.
+            const std::array<int, 3> u{pick(5) - 2, pick(5) - 2, pick(3)};
+            const std::array<int, 3> v{pick(5) - 2, pick(3) - 1, pick(5) - 2};
+            const std::array<int, 3> w{pick(3) - 1, pick(3) - 1, 1};
+            const auto at = [&](int s, int t, int k) {
+                return scaled(s * u[0] + t * v[0] + k * w[0],
+                              s * u[1] + t * v[1] + k * w[1],
+                              s * u[2] + t * v[2] + k * w[2]);
+            };
+            Plc plc;
+            const auto add = [&](const predicates::GenericPoint3& g) {
+                plc.points.exact.push_back(g);
+                plc.points.points.push_back(rounded_point(g));
+                return static_cast<std::uint32_t>(plc.points.exact.size() - 1);
+            };
+            std::vector<std::uint32_t> loop;
+            loop.push_back(add(at(0, 0, 0)));
+            for (int k = 0; k < 6; ++k) {
+                // Repeats of the first corner, corners on the line along u, points of segments
+                // from the first corner (either end, inside or beyond) or between others, on
+                // that line or off it, and corners anywhere in the plane.
+                const int kind = pick(6);
+                const int s = pick(5) - 2;
+                const int t = pick(5) - 2;
+                const std::array<std::array<double, 2>, 4> parameters{
+                    {{1, 3}, {-1, -3}, {2, 3}, {4, 3}}};
+                const auto& [numerator, denominator] =
+                    parameters[static_cast<std::size_t>(pick(4))];
+                if (kind == 0) {
+                    loop.push_back(add(at(0, 0, 0)));
+                } else if (kind == 1) {
+                    loop.push_back(add(at(s, 0, 0)));
+                } else if (kind == 2 || kind == 3) {
+                    const Point3 end = at(s, kind == 2 ? 0 : t, 0);
+                    const bool first_end = pick(2) == 0;
+                    loop.push_back(
+                        add(*predicates::segment_parameter_point(first_end ? at(0, 0, 0) : end,
+                                                                 first_end ? end : at(0, 0, 0),
+                                                                 numerator,
+                                                                 denominator)));
+                } else if (kind == 4) {
+                    loop.push_back(add(*predicates::segment_parameter_point(
+                        at(s, pick(2) * t, 0), at(t, pick(3) - 1, 0), numerator, denominator)));
+                } else {
+                    loop.push_back(add(at(s, t, 0)));
+                }
+            }
+            std::vector<std::uint32_t> off;
+            for (int k = 0; k < 8; ++k) {
+                off.push_back(add(at(pick(5) - 2, pick(5) - 2, pick(5) - 2)));
+            }
+            off.push_back(
+                add(*predicates::segment_parameter_point(at(1, 0, 1), at(0, 1, -1), 1, 3)));
+            PlcFacet facet;
+            facet.loops = {loop};
+            plc.facets = {facet};
+            // The oracle: the first triple of corners with a non-zero rational normal.
+            std::optional<std::pair<ExactPoint, ExactPoint>> expected;
+            const ExactPoint a = exact_point(plc.points, loop[0]);
+            for (std::size_t i = 1; i < loop.size() && !expected; ++i) {
+                const ExactPoint b = exact_point(plc.points, loop[i]);
+                for (std::size_t j = i + 1; j < loop.size() && !expected && b != a; ++j) {
+                    const ExactPoint n =
+                        cross(minus(b, a), minus(exact_point(plc.points, loop[j]), a));
+                    if (!is_zero(n)) {
+                        expected.emplace(a, n);
+                    }
+                }
+            }
+            const auto plane = ExactPlane::of_facet(plc, plc.facets[0]);
+            ASSERT_EQ(plane.has_value(), expected.has_value()) << exponent << " " << trial;
+            if (!plane) {
+                ++collinear;
+                continue;
+            }
+            ++planes;
+            const ExactPoint& n = expected->second;
+            EXPECT_NE(n[static_cast<std::size_t>(plane->dropped_axis())], 0);
+            for (std::uint32_t i = 0; i < plc.points.exact.size(); ++i) {
+                const Rational d = dot(n, minus(exact_point(plc.points, i), expected->first));
+                const int sign = d > 0 ? 1 : d < 0 ? -1 : 0;
+                EXPECT_EQ(static_cast<int>(plane->side(plc.points.exact[i])), sign)
+                    << exponent << " " << trial << " point " << i;
+                EXPECT_EQ(plane->offset(exact_point(plc.points, i)).sign(), sign);
+            }
+        }
+    }
+    EXPECT_GT(planes, 200);
+    EXPECT_GT(collinear, 5);
+}
+
 /// a + t (b - a) in rational arithmetic step by step, t = numerator / denominator or, for a line
 /// and a plane, n . (p - a) / n . (b - a): the definition, against exact_point's integers.
 ExactPoint point_by_definition(const predicates::GenericPoint3& g) {
@@ -982,6 +1094,128 @@ TEST(SplitTriangle, CrossingsAgreeWithTheRationalRegion) {
     }
     EXPECT_GT(inside, 100);
     EXPECT_GT(outside, 100);
+}
+
+TEST(SplitTriangle, FacesOnThePlaneAgreeWithTheRationalCentroid) {
+    // Vertices, edges and triangles of points of the plane z = 0 (input points on a grid of
+    // quarter steps, split points and line-plane points among them), against a split triangle
+    // and a plain one: FacetGeometry decides them by orientations against the triangle's sides,
+    // and must answer as the region does at the rational centroid. Only faces that a complex can
+    // hold are asked: none crosses a side (all vertices in the closed triangle, or all on the
+    // far side of one side's line), and none lies on one side's line.
+    for (const bool split : {true, false}) {
+        Plc plc = split_triangle_plc(split ? std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}
+                                           : std::vector<std::uint32_t>{0, 2, 4});
+        const auto add = [&](const predicates::GenericPoint3& g) {
+            plc.points.exact.push_back(g);
+            plc.points.points.push_back(rounded_point(g));
+            return static_cast<VertexId>(plc.points.exact.size() - 1);
+        };
+        Random random(split ? 11 : 12);
+        const auto grid = [&] {
+            return Point3{0.25 * static_cast<double>(random.below(25)) - 1.0,
+                          0.25 * static_cast<double>(random.below(25)) - 1.0,
+                          0.0};
+        };
+        std::vector<VertexId> on;
+        for (VertexId v = 0; v < 6; ++v) {
+            on.push_back(v);
+        }
+        for (int k = 0; k < 30; ++k) {
+            on.push_back(add(grid()));
+            on.push_back(add(*predicates::segment_parameter_point(grid(), grid(), 1, 3)));
+        }
+        for (int k = 0; k < 6; ++k) {
+            const Point3 p = grid();
+            const Point3 q = grid();
+            if (const auto x = predicates::line_plane_point(
+                    {p.x, p.y, -1.0}, {q.x, q.y, 1.0}, {0, 0, 0}, {4, 0, 0}, {0, 4, 0})) {
+                on.push_back(add(*x));
+            }
+        }
+        const VertexId top = add(Point3{1, 1, 1});
+        const VertexId top2 = add(Point3{2, 1, 3});
+        const VertexId top3 = add(Point3{1, 2, 2});
+        std::vector<std::uint32_t> keys(plc.points.size());
+        std::iota(keys.begin(), keys.end(), 0u);
+        const Geometry geometry(plc.points.points, keys, {}, plc.points.exact);
+        FacetGeometry facet(geometry, plc, plc.facets[0]);
+        const auto plane = ExactPlane::of_facet(plc, plc.facets[0]);
+        const FacetRegion region(plc, plc.facets[0], *plane);
+        // Twice the signed area of (c_i, c_{i+1}, p): positive inside side i's line.
+        const std::array<ExactPoint, 3> c{exact_point(Point3{0, 0, 0}),
+                                          exact_point(Point3{4, 0, 0}),
+                                          exact_point(Point3{0, 4, 0})};
+        const auto inward = [&](std::size_t i, const ExactPoint& p) {
+            const ExactPoint& u = c[i];
+            const ExactPoint& w = c[(i + 1) % 3];
+            return Rational((w[0] - u[0]) * (p[1] - u[1]) - (w[1] - u[1]) * (p[0] - u[0])).sign();
+        };
+        int inside = 0;
+        int outside = 0;
+        for (int trial = 0; trial < 4000; ++trial) {
+            const std::size_t size = 1 + random.below(3);
+            std::vector<VertexId> face;
+            for (std::size_t k = 0; k < size; ++k) {
+                face.push_back(on[random.below(on.size())]);
+            }
+            std::vector<ExactPoint> points;
+            for (VertexId v : face) {
+                points.push_back(exact_point(plc.points.exact[v]));
+            }
+            bool closed = true;   // every vertex in the closed triangle
+            bool beyond = false;  // every vertex on the far side of one side's line, or on it
+            bool along = false;   // every vertex on one side's line
+            for (std::size_t i = 0; i < 3; ++i) {
+                bool all_beyond = true;
+                bool all_along = true;
+                for (const ExactPoint& p : points) {
+                    closed = closed && inward(i, p) >= 0;
+                    all_beyond = all_beyond && inward(i, p) <= 0;
+                    all_along = all_along && inward(i, p) == 0;
+                }
+                beyond = beyond || all_beyond;
+                along = along || all_along;
+            }
+            std::vector<VertexId> sorted = face;
+            std::sort(sorted.begin(), sorted.end());
+            const bool distinct = std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+            bool degenerate = false;
+            if (size == 3) {
+                degenerate =
+                    Rational((points[1][0] - points[0][0]) * (points[2][1] - points[0][1]) -
+                             (points[1][1] - points[0][1]) * (points[2][0] - points[0][0]))
+                        .sign() == 0;
+            } else if (size == 2) {
+                degenerate = points[0] == points[1];
+            }
+            if (!distinct || degenerate || along || !(closed || beyond)) {
+                continue;
+            }
+            ExactPoint centroid{0, 0, 0};
+            for (const ExactPoint& p : points) {
+                for (std::size_t k = 0; k < 3; ++k) {
+                    centroid[k] += p[k] / static_cast<int>(size);
+                }
+            }
+            const bool expected = region.contains(centroid);
+            // A tetrahedron on the face, its other vertices above the plane: it touches the
+            // polygon exactly when the face is in the region.
+            const std::array<VertexId, 3> tops{top, top2, top3};
+            TetVertices t{};
+            for (std::size_t k = 0; k < 4; ++k) {
+                t[k] = k < size ? face[k] : tops[k - size];
+            }
+            const bool touches = facet.contact(t) == FacetGeometry::Contact::kTouches;
+            EXPECT_EQ(touches, expected) << "trial " << trial;
+            if (size == 3) {
+                EXPECT_EQ(facet.holds_triangle({face[0], face[1], face[2]}), expected);
+            }
+            (expected ? inside : outside) += 1;
+        }
+        EXPECT_GT(inside, 50);
+        EXPECT_GT(outside, 200);
+    }
 }
 
 }  // namespace

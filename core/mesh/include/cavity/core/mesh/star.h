@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "cavity/core/mesh/array_storage.h"
@@ -25,12 +27,18 @@ EdgeRing edge_ring(const ArrayStorage& storage, TetId t, int i, int j);
 /// contain v, starting at Adjacent2Vertex(v). Empty when v is not a vertex.
 std::vector<TetId> vertex_star(const ArrayStorage& storage, VertexId v);
 
-/// vertex_star, with the caller keeping track of the tetrahedra reached: `first_reach(star, t)`
-/// returns whether t is reached for the first time (the tetrahedra so far are `star`) and
-/// remembers it. vertex_star looks t up in `star`, quadratic in the star's size; a caller that
-/// gathers many large stars (edge protection) marks tetrahedra instead. Same order either way.
-template <class FirstReach>
-std::vector<TetId> vertex_star(const ArrayStorage& storage, VertexId v, FirstReach&& first_reach) {
+/// vertex_star, with the caller keeping track of the tetrahedra reached, and stopping early:
+/// `first_reach(star, t)` returns whether t is reached for the first time (the tetrahedra so far
+/// are `star`) and remembers it; the search gives up, returning nullopt, at the first tetrahedron
+/// t of the star (in search order) for which `stop(t)` holds. vertex_star looks t up in `star`,
+/// quadratic in the star's size; a caller that gathers many large stars (edge protection) marks
+/// tetrahedra instead, and one that only needs the star when some vertex is not in it (is uv an
+/// edge?) stops there. Same order either way.
+template <class FirstReach, class Stop>
+std::optional<std::vector<TetId>> vertex_star_unless(const ArrayStorage& storage,
+                                                     VertexId v,
+                                                     FirstReach&& first_reach,
+                                                     Stop&& stop) {
     std::vector<TetId> star;
     const TetId start = storage.tet_at_vertex(v);
     if (start == kNoTet) {
@@ -40,6 +48,9 @@ std::vector<TetId> vertex_star(const ArrayStorage& storage, VertexId v, FirstRea
     star.push_back(start);
     for (std::size_t k = 0; k < star.size(); ++k) {
         const TetId t = star[k];
+        if (stop(t)) {
+            return std::nullopt;
+        }
         const TetVertices& w = storage.vertices(t);
         for (int f = 0; f < 4; ++f) {
             if (w[static_cast<std::size_t>(f)] == v) {
@@ -52,6 +63,13 @@ std::vector<TetId> vertex_star(const ArrayStorage& storage, VertexId v, FirstRea
         }
     }
     return star;
+}
+
+/// vertex_star_unless without the early stop.
+template <class FirstReach>
+std::vector<TetId> vertex_star(const ArrayStorage& storage, VertexId v, FirstReach&& first_reach) {
+    return *vertex_star_unless(
+        storage, v, std::forward<FirstReach>(first_reach), [](TetId) { return false; });
 }
 
 /// The slot of vertex v in t, or -1.
