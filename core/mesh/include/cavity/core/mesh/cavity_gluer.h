@@ -136,14 +136,17 @@ private:
     /// writes each face through the apex into the cell of its directed edge.
     template <std::size_t A>
     [[gnu::always_inline]] void number_faces(TetId t, const TetVertices& v) {
+        // The three other slots as constants (GCC kept the loop over the four slots rolled, with
+        // the vertices and numbers on the stack and indexed at run time).
+        constexpr std::size_t kS0 = A == 0 ? 1 : 0;
+        constexpr std::size_t kS1 = A <= 1 ? 2 : 1;
+        constexpr std::size_t kS2 = A <= 2 ? 3 : 2;
         std::array<std::uint32_t, 4> number{};
-        std::uint32_t packed = std::uint32_t{A} << kApexShift;
-        for (std::size_t s = 0; s < 4; ++s) {
-            if (s != A) {
-                number[s] = local_number(v[s]);
-                packed |= number[s] << (8 * s);
-            }
-        }
+        number[kS0] = local_number(v[kS0]);
+        number[kS1] = local_number(v[kS1]);
+        number[kS2] = local_number(v[kS2]);
+        const std::uint32_t packed = (std::uint32_t{A} << kApexShift) | (number[kS0] << (8 * kS0)) |
+                                     (number[kS1] << (8 * kS1)) | (number[kS2] << (8 * kS2));
         numbers_.push_back(packed);
         for (const ApexFace& face : kApexFaces[A]) {
             matrix_[number[face.from] * kMatrixSide + number[face.to]] = half_facet(t, face.s);
