@@ -100,6 +100,13 @@ void count(const perturbation::SosVerdict& v, PredicateKind kind, T& tally) {
     }
 }
 
+/// True when the four points are integer points: the lattice routes' test that the plain
+/// determinant of these points is exact. `&`, not `&&`: one branch on the combined answer.
+bool all_integral(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+    return predicates::is_integral(a) & predicates::is_integral(b) & predicates::is_integral(c) &
+           predicates::is_integral(d);
+}
+
 }  // namespace
 
 predicates::Verdict Geometry::orient3d_generic(VertexId a,
@@ -119,8 +126,7 @@ Sign Geometry::orient3d_on_lattice_or_exact(const Point3& a,
                                             const Point3& d) const {
     // Integer points in the box have an exact plain determinant; the walks' other points (the
     // straight walk's source) need not be integer points and take the exact predicate.
-    if (predicates::is_integral(a) & predicates::is_integral(b) & predicates::is_integral(c) &
-        predicates::is_integral(d)) {
+    if (all_integral(a, b, c, d)) {
         return predicates::orient3d_on_lattice(a, b, c, d);
     }
     return predicates::orient3d(a, b, c, d);
@@ -139,8 +145,7 @@ predicates::Verdict Geometry::orient3d_staged_on_lattice_or_staged(const Point3&
                                                                    const Point3& d) const {
     // Points in the box have small coordinates on a staged lattice; integer ones are lattice
     // points.
-    if (predicates::is_integral(a) & predicates::is_integral(b) & predicates::is_integral(c) &
-        predicates::is_integral(d)) {
+    if (all_integral(a, b, c, d)) {
         return predicates::orient3d_staged_on_lattice(a, b, c, d);
     }
     return predicates::orient3d_staged(a, b, c, d);

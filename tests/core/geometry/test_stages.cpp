@@ -44,6 +44,19 @@ Geometry unweighted(const std::vector<Point3>& points) {
     return Geometry(points, std::move(keys), {});
 }
 
+/// The side^3 grid points offset + (x, y, z) for integers 0 <= x, y, z < side.
+std::vector<Point3> grid(int side, const Point3& offset) {
+    std::vector<Point3> points;
+    for (int x = 0; x < side; ++x) {
+        for (int y = 0; y < side; ++y) {
+            for (int z = 0; z < side; ++z) {
+                points.push_back({offset.x + x, offset.y + y, offset.z + z});
+            }
+        }
+    }
+    return points;
+}
+
 /// Five distinct vertices, the first four a positively oriented tetrahedron (as the engine's
 /// solid tetrahedra are); false when the four drawn are coplanar.
 bool draw_query(const Geometry& g, std::mt19937_64& rng, TetVertices& t, VertexId& u) {
@@ -116,15 +129,7 @@ TEST(Stages, StaticIsCountedFirstOnUniformPointsAndTheLaterStagesKeepTheirCounts
 TEST(Stages, OnAGridTheTiesStillReachTheExactStagesAndTheTieBreak) {
     // Half-integer grid points are cospherical in many ways but no lattice (the lattice path
     // needs integers): their ties reach the staged predicates' exact stages.
-    std::vector<Point3> grid;
-    for (int x = 0; x < 6; ++x) {
-        for (int y = 0; y < 6; ++y) {
-            for (int z = 0; z < 6; ++z) {
-                grid.push_back({x + 0.5, y + 0.25, z + 0.125});
-            }
-        }
-    }
-    const Geometry g = unweighted(grid);
+    const Geometry g = unweighted(grid(6, {0.5, 0.25, 0.125}));
     ASSERT_FALSE(g.lattice());
     const Counters c = check_insphere_stages(g, 20000);
     const auto& calls = c.stage_calls[kInsphere];
@@ -134,15 +139,7 @@ TEST(Stages, OnAGridTheTiesStillReachTheExactStagesAndTheTieBreak) {
 }
 
 TEST(Stages, OnALatticeTheStaticFilterDecidesEveryTestAndTiesGoToTheTieBreak) {
-    std::vector<Point3> grid;
-    for (int x = 0; x < 6; ++x) {
-        for (int y = 0; y < 6; ++y) {
-            for (int z = 0; z < 6; ++z) {
-                grid.push_back({double(x), double(y), double(z)});
-            }
-        }
-    }
-    const Geometry g = unweighted(grid);
+    const Geometry g = unweighted(grid(6, {0, 0, 0}));
     ASSERT_TRUE(g.lattice());
     const Counters c = check_insphere_stages(g, 20000);
     EXPECT_GT(c.perturbations, 0u);
@@ -184,15 +181,7 @@ TEST(Stages, WalkOrientationsCountTheStaticStage) {
 // of vertices and the walks' tests in the box, where a query point off the lattice (a straight
 // walk's source) takes the staged predicate.
 TEST(Stages, OnALatticeOrientationsCountTheStagedPredicatesStages) {
-    std::vector<Point3> grid;
-    for (int x = 0; x < 5; ++x) {
-        for (int y = 0; y < 5; ++y) {
-            for (int z = 0; z < 5; ++z) {
-                grid.push_back({double(x), double(y), double(z)});
-            }
-        }
-    }
-    const Geometry g = unweighted(grid);
+    const Geometry g = unweighted(grid(5, {0, 0, 0}));
     ASSERT_TRUE(g.lattice());
     std::mt19937_64 rng(19);
     std::uniform_int_distribution<VertexId> pick(0, static_cast<VertexId>(g.size() - 1));

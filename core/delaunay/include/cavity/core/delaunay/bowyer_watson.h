@@ -109,6 +109,14 @@ public:
             gluer_.glue(storage_, std::span<const TetId>(created_.begin(), created_.size()), u);
         }
         if (geometry_.weighted()) {
+            // After the search, not per tetrahedron: the deleted records stay readable until
+            // end_operation(), and the unweighted search then tests weighted() once per insertion.
+            for (TetId t : deleted_) {
+                stamp(deleted_stamp_, storage_.vertices(t));
+            }
+            for (TetId t : created_) {
+                stamp(created_stamp_, storage_.vertices(t));
+            }
             collect_vanished(u);
         }
         storage_.end_operation();
@@ -171,11 +179,11 @@ private:
             return engine.conflicts(t, u);
         }
 
-        void take(TetId t) { engine.remove(t); }
+        [[gnu::always_inline]] void take(TetId t) { engine.remove(t); }
 
         static void blocked_inside(TetId, int) {}
 
-        void cavity_face(TetId t, int f, HalfFacet across) {
+        [[gnu::always_inline]] void cavity_face(TetId t, int f, HalfFacet across) {
             engine.fill_cavity_face(u, t, f, across);
         }
     };
@@ -189,13 +197,9 @@ private:
         return t;
     }
 
-    void remove(TetId t) {
-        const TetVertices& v = storage_.vertices(t);
+    [[gnu::always_inline]] void remove(TetId t) {
         if constexpr (Observer::kCounting) {
-            ++(is_ghost(v) ? tally().ghosts_deleted : tally().tets_deleted);
-        }
-        if (geometry_.weighted()) {
-            stamp(deleted_stamp_, v);
+            ++(is_ghost(storage_.vertices(t)) ? tally().ghosts_deleted : tally().tets_deleted);
         }
         storage_.delete_tetrahedron(t);
         observer_.on_tet_deleted(t, step_);
@@ -204,8 +208,15 @@ private:
 
     /// AddTetrahedron(u, face): the face is facet f of the deleted tetrahedron `inner`, whose
     /// other side (`across`) survives.
-    void fill_cavity_face(VertexId u, TetId inner, int f, HalfFacet across) {
-        const auto [v, u_slot] = cone(facet_vertices(storage_.vertices(inner), f), u);
+    /// Inlined into the cavity search: out of line (27 calls per point on a uniform cube) it was
+    /// a call around a few stores, with the callee's registers saved and restored each time.
+    [[gnu::always_inline]] void fill_cavity_face(VertexId u, TetId inner, int f, HalfFacet across) {
+        const TetVertices& w = storage_.vertices(inner);
+        // Only a ghost's facets other than its hull triangle hold the ghost vertex, which cone()
+        // must rotate to slot 3; every other face is joined to u in slot 3 as it is.
+        const auto [v, u_slot] = is_ghost(w) && f != 3
+                                     ? cone(facet_vertices(w, f), u)
+                                     : Cone{with_apex(facet_vertices(w, f), u), 3};
         const TetId t = add(v, step_);
         storage_.glue(half_facet(t, u_slot), across);
         created_.push_back(t);
@@ -215,9 +226,10 @@ private:
         if (!is_ghost(v)) {
             last_solid_ = t;
         }
-        if (geometry_.weighted()) {
-            stamp(created_stamp_, v);
-        }
+    }
+
+    static TetVertices with_apex(const std::array<VertexId, 3>& tri, VertexId u) {
+        return {tri[0], tri[1], tri[2], u};
     }
 
     void stamp(std::vector<std::uint32_t>& stamps, const TetVertices& v) {

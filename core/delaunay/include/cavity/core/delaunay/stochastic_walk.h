@@ -32,8 +32,13 @@ private:
 /// `leaves` must not leave through it (that memory is what makes the walk terminate on every
 /// triangulation, degenerate or constrained), though it may look at it. The walk ends at the
 /// tetrahedron no facet leaves.
+///
+/// Inlined into its caller, whose tests (`stop`, `leaves`) then inline into the loop: left out of
+/// line (as GCC left the counting engine's walk and the conflict graph's moves), each step
+/// reloaded the tests' captures and counters from memory (callgrind: 0.9% of the counting
+/// engine's instructions on a 50^3 grid, 9.5% of the conflict graph's on a 2*10^5 cube).
 template <class Storage, class Stop, class Leaves>
-TetId stochastic_walk(
+[[gnu::always_inline]] inline TetId stochastic_walk(
     const Storage& storage, TetId start, WalkRandom& random, Stop&& stop, Leaves&& leaves) {
     TetId t = start;
     int entered = -1;

@@ -27,7 +27,7 @@ public:
     [[gnu::always_inline]] TetId add_tetrahedron(const TetVertices& v) { return allocate(v); }
 
     /// DeleteTetrahedron. Its data stays readable until end_operation().
-    void delete_tetrahedron(TetId t) { release(t); }
+    [[gnu::always_inline]] void delete_tetrahedron(TetId t) { release(t); }
 
     /// Adjacent: the half-facet on the other side of facet f of t, or kNoHalfFacet when the
     /// tetrahedron there has been deleted.

@@ -43,18 +43,21 @@ public:
             return;
         }
         numbers_.clear();
+        // The next number to give, in a register: as a member it was reloaded after every store
+        // to the table (the same type, so possibly the same memory to the compiler).
+        std::uint32_t next = 1;
         for (TetId t : created) {
             const TetVertices v = storage.vertices(t);
             // The apex is in slot 3 but in ghosts (cone() in tetrahedron.h): the tests go in that
             // order, and each case is compiled with its faces' slots as constants.
             if (v[3] == apex) [[likely]] {
-                number_faces<3>(t, v);
+                number_faces<3>(t, v, next);
             } else if (v[0] == apex) {
-                number_faces<0>(t, v);
+                number_faces<0>(t, v, next);
             } else if (v[1] == apex) {
-                number_faces<1>(t, v);
+                number_faces<1>(t, v, next);
             } else {
-                number_faces<2>(t, v);
+                number_faces<2>(t, v, next);
             }
         }
         for (std::size_t k = 0; k < created.size(); ++k) {
@@ -74,7 +77,7 @@ public:
                     break;
             }
         }
-        forget_numbers();
+        forget_numbers(next);
     }
 
 private:
@@ -100,7 +103,7 @@ private:
     }
 
     /// The number of boundary vertex w in this cavity, given on its first lookup (1, 2, ...).
-    [[gnu::always_inline]] std::uint32_t local_number(VertexId w) {
+    [[gnu::always_inline]] std::uint32_t local_number(VertexId w, std::uint32_t& next) {
         // Fibonacci hashing: the top bits of the product depend on every bit of the id.
         std::size_t i = (w * 0x9E37'79B1u) >> (32 - kTableBits);
         for (;;) {
@@ -111,39 +114,42 @@ private:
             if (e.vertex == kNoVertex) {
                 // Euler's count bounds the numbers for a sphere, which the size check in glue()
                 // relied on; more would mean a corrupt cavity, never a memory overrun.
-                if (next_ == kMatrixSide) [[unlikely]] {
-                    forget_numbers();
+                if (next == kMatrixSide) [[unlikely]] {
+                    forget_numbers(next);
                     throw_too_many_vertices();
                 }
-                e = {w, next_};
-                slot_of_[next_] = static_cast<std::uint32_t>(i);
-                return next_++;
+                e = {w, next};
+                slot_of_[next] = static_cast<std::uint32_t>(i);
+                return next++;
             }
             i = (i + 1) & (kTableSize - 1);
         }
     }
 
-    /// Empties the table by undoing this cavity's writes, ready for the next one.
-    void forget_numbers() {
-        for (std::uint32_t k = 1; k < next_; ++k) {
+    /// Empties the table by undoing this cavity's writes (numbers 1 to next - 1), ready for the
+    /// next cavity.
+    void forget_numbers(std::uint32_t next) {
+        for (std::uint32_t k = 1; k < next; ++k) {
             table_[slot_of_[k]].vertex = kNoVertex;
         }
-        next_ = 1;
     }
 
     /// First pass for a new tetrahedron t (vertices v) with the apex in slot A: numbers its other
     /// vertices, keeps the numbers (a byte each, the apex's 0) and A in its word of numbers_, and
     /// writes each face through the apex into the cell of its directed edge.
     template <std::size_t A>
-    [[gnu::always_inline]] void number_faces(TetId t, const TetVertices& v) {
+    [[gnu::always_inline]] void number_faces(TetId t, const TetVertices& v, std::uint32_t& next) {
+        // The three other slots as constants (GCC kept the loop over the four slots rolled, with
+        // the vertices and numbers on the stack and indexed at run time).
+        constexpr std::size_t kS0 = A == 0 ? 1 : 0;
+        constexpr std::size_t kS1 = A <= 1 ? 2 : 1;
+        constexpr std::size_t kS2 = A <= 2 ? 3 : 2;
         std::array<std::uint32_t, 4> number{};
-        std::uint32_t packed = std::uint32_t{A} << kApexShift;
-        for (std::size_t s = 0; s < 4; ++s) {
-            if (s != A) {
-                number[s] = local_number(v[s]);
-                packed |= number[s] << (8 * s);
-            }
-        }
+        number[kS0] = local_number(v[kS0], next);
+        number[kS1] = local_number(v[kS1], next);
+        number[kS2] = local_number(v[kS2], next);
+        const std::uint32_t packed = (std::uint32_t{A} << kApexShift) | (number[kS0] << (8 * kS0)) |
+                                     (number[kS1] << (8 * kS1)) | (number[kS2] << (8 * kS2));
         numbers_.push_back(packed);
         for (const ApexFace& face : kApexFaces[A]) {
             matrix_[number[face.from] * kMatrixSide + number[face.to]] = half_facet(t, face.s);
@@ -217,7 +223,6 @@ private:
         return empty;
     }();
     std::array<std::uint32_t, kMatrixSide> slot_of_{};  // the table slot of each number
-    std::uint32_t next_ = 1;                            // the next number to give
     PodStack<std::uint32_t> numbers_;  // per new tetrahedron, its four numbers, a byte each
     std::array<HalfFacet, kMatrixSide * kMatrixSide> matrix_{};
     FacetGluer hashed_;
