@@ -738,6 +738,18 @@ void check_carved_complex(const Plc& plc,
     }
 }
 
+/// insphere_sos of points v[0..4] keyed on their indices: on the input doubles when there are
+/// no implicit points, else on the points' definitions where they are stored (copying each into a
+/// GenericPoint3, as generic_point does, cost more than most of these tests).
+Sign insphere_of(const PointSet& points, const perturbation::Keys5& v) {
+    if (points.exact.empty()) {
+        const auto& p = points.points;
+        return perturbation::insphere_sos(p[v[0]], p[v[1]], p[v[2]], p[v[3]], p[v[4]], v);
+    }
+    const auto& e = points.exact;
+    return perturbation::insphere_sos(e[v[0]], e[v[1]], e[v[2]], e[v[3]], e[v[4]], v);
+}
+
 }  // namespace
 
 CdtValidation validate_cdt(const Plc& plc,
@@ -813,7 +825,6 @@ CdtValidation validate_cdt(const Plc& plc,
     std::sort(constrained.begin(), constrained.end());
     constrained.erase(std::unique(constrained.begin(), constrained.end()), constrained.end());
     result.polygon_triangles = constrained.size();
-    const ExactPoints pts{plc.points};
     auto next_constrained = constrained.begin();
     for (const auto& [g, on] : sides) {
         while (next_constrained != constrained.end() && *next_constrained < g) {
@@ -832,9 +843,7 @@ CdtValidation validate_cdt(const Plc& plc,
         // Stored mirrored, as the perturbation expects orient3d > 0; keys are the indices.
         const auto& t = tets[on.tet[0]];
         const std::uint32_t q = apex(tets[on.tet[1]], g);
-        if (perturbation::insphere_sos(
-                pts[t[1]], pts[t[0]], pts[t[2]], pts[t[3]], pts[q], {t[1], t[0], t[2], t[3], q}) ==
-            Sign::kPos) {
+        if (insphere_of(plc.points, {t[1], t[0], t[2], t[3], q}) == Sign::kPos) {
             report.add(triangle_name(g, b) + " is in no polygon and not locally Delaunay");
         }
     }
