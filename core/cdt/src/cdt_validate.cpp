@@ -367,7 +367,7 @@ public:
         const std::uint32_t q = loop[1];
         std::array<std::uint32_t, 2> seeds{};
         std::size_t seed_count = 0;
-        for (std::uint32_t k : around.of(p)) {
+        for (std::uint32_t k : fewer(around, p, q)) {
             const Triangle& g = mesh.triangles[k];
             const std::uint32_t r = third(g, p, q);
             if (r == kNone || side(r) != Sign::kZero) {
@@ -410,6 +410,15 @@ private:
         return hits == 2 ? other : kNone;
     }
 
+    /// The triangles around a or around b, whichever are fewer: those on edge ab are in both.
+    static std::span<const std::uint32_t> fewer(const VertexTriangles& around,
+                                                std::uint32_t a,
+                                                std::uint32_t b) {
+        const auto at_a = around.of(a);
+        const auto at_b = around.of(b);
+        return at_a.size() <= at_b.size() ? at_a : at_b;
+    }
+
     bool loop_side(std::uint32_t a, std::uint32_t b) const {
         return std::binary_search(
             undirected_.begin(), undirected_.end(), Edge{std::min(a, b), std::max(a, b)});
@@ -439,10 +448,11 @@ private:
                     boundary_.push_back({a, b});
                     continue;
                 }
-                // The one other coplanar triangle on ab, run b -> a.
+                // The one other coplanar triangle on ab, run b -> a, among the triangles around
+                // the end with fewer (a vertex of a large flat polygon has hundreds).
                 std::uint32_t across = kNone;
                 std::uint32_t apex = kNone;
-                for (std::uint32_t m : around.of(a)) {
+                for (std::uint32_t m : fewer(around, a, b)) {
                     const std::uint32_t r = third(mesh.triangles[m], a, b);
                     if (m == k || r == kNone || side(r) != Sign::kZero) {
                         continue;
