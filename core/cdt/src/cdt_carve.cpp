@@ -4,7 +4,6 @@
 #include <string>
 
 #include "cavity/core/base/error.h"
-#include "cavity/core/cdt/cdt_regions.h"
 #include "tet_flood.h"
 
 namespace cavity::core {
@@ -17,11 +16,10 @@ namespace {
 }
 
 /// Which tetrahedra the holes and (unless convex_hull) the exterior remove; the hole points are
-/// checked either way.
-std::vector<bool> removed_tets(const Cdt& cdt, bool convex_hull) {
+/// checked either way. Leaves the tetrahedra it removed reached in `flood`.
+std::vector<bool> removed_tets(const Cdt& cdt, bool convex_hull, TetFlood& flood) {
     const auto& pts = cdt.plc.points;
     std::vector<bool> removed(cdt.tets.size(), false);
-    TetFlood flood(cdt.tets, cdt.faces);
     const auto remove = [&](std::uint32_t t) { removed[t] = true; };
     for (const PlcVolumeHole& hole : cdt.plc.volume_holes) {
         const std::optional<std::uint32_t> seed = flood.locate(pts, hole.point);
@@ -46,11 +44,20 @@ std::vector<bool> removed_tets(const Cdt& cdt, bool convex_hull) {
 }  // namespace
 
 CarvedCdt carve_cdt(const Cdt& cdt, bool convex_hull) {
-    // The whole hull without hole points to check needs no flood (nor its O(T) hash table).
-    const std::vector<bool> removed = convex_hull && cdt.plc.volume_holes.empty()
-                                          ? std::vector<bool>(cdt.tets.size(), false)
-                                          : removed_tets(cdt, convex_hull);
-    const std::vector<std::int32_t> markers = region_markers(cdt.plc, cdt.tets, cdt.faces);
+    // The whole hull without hole points to check, and without regions, needs no flood (nor its
+    // facet matching); carving and the regions share one.
+    const bool carves = !convex_hull || !cdt.plc.volume_holes.empty();
+    std::optional<TetFlood> flood;
+    if (carves || !cdt.plc.regions.empty()) {
+        flood.emplace(cdt.tets, cdt.faces);
+    }
+    const std::vector<bool> removed =
+        carves ? removed_tets(cdt, convex_hull, *flood) : std::vector<bool>(cdt.tets.size(), false);
+    std::vector<std::int32_t> markers(cdt.tets.size(), 0);
+    if (!cdt.plc.regions.empty()) {
+        flood->forget_reached();
+        markers = region_markers(cdt.plc, *flood, cdt.tets.size());
+    }
     CarvedCdt out;
     for (std::size_t t = 0; t < cdt.tets.size(); ++t) {
         if (removed[t]) {

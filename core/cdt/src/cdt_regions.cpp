@@ -7,14 +7,8 @@
 
 namespace cavity::core {
 
-std::vector<std::int32_t> region_markers(const Plc& plc,
-                                         std::span<const Tet> tets,
-                                         std::span<const CdtFace> faces) {
-    std::vector<std::int32_t> marker(tets.size(), 0);
-    if (plc.regions.empty()) {
-        return marker;
-    }
-    TetFlood flood(tets, faces);
+std::vector<std::int32_t> region_markers(const Plc& plc, TetFlood& flood, std::size_t tets) {
+    std::vector<std::int32_t> marker(tets, 0);
     for (const PlcRegion& region : plc.regions) {
         const std::optional<std::uint32_t> seed = flood.locate(plc.points, region.point);
         if (!seed) {
@@ -27,6 +21,16 @@ std::vector<std::int32_t> region_markers(const Plc& plc,
         flood.fill(*seed, [&](std::uint32_t t) { marker[t] = region.marker; });
     }
     return marker;
+}
+
+std::vector<std::int32_t> region_markers(const Plc& plc,
+                                         std::span<const Tet> tets,
+                                         std::span<const CdtFace> faces) {
+    if (plc.regions.empty()) {
+        return std::vector<std::int32_t>(tets.size(), 0);
+    }
+    TetFlood flood(tets, faces);
+    return region_markers(plc, flood, tets.size());
 }
 
 }  // namespace cavity::core

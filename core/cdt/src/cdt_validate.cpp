@@ -317,6 +317,190 @@ std::optional<std::vector<Triangle>> covering_faces(const Plc& plc,
     return faces;
 }
 
+/// The coplanar triangles of a one-loop polygon found by combinatorics alone, no region test and
+/// no rational area: a flood from a triangle on the loop's first side, across the mesh edges in
+/// the plane that are no loop side, orienting each triangle reached like the one it was reached
+/// from (each shared edge run both ways). Why the answer is exact. Run only once the complex is
+/// a valid triangulation and every PLC edge a mesh edge (as covering_faces), so coplanar mesh
+/// triangles never overlap: two on a common edge lie on its two sides, so orienting across it
+/// gives both the same orientation in the plane, and every triangle found has the same one. Their
+/// chain c (each +1, as oriented) then counts each point of the plane 0 or +-1 times; when its
+/// boundary is exactly the loop, run one way or the other, c's count is the loop's winding number
+/// up to sign, so the winding number is 0 or +-1 everywhere and nonzero exactly where it is odd:
+/// the triangles cover exactly the points inside the loop by parity, which is FacetRegion's
+/// region of a loop without hole points. Then, as in covering_faces, they are all its faces and
+/// no tetrahedron crosses it. nullopt when the flood's boundary is anything else (other loops,
+/// slits, a missing triangle, a seed outside): the caller then decides the slow way.
+class LoopFlood {
+public:
+    explicit LoopFlood(std::size_t triangles) : stamp_(triangles, 0), even_(triangles, false) {}
+
+    std::optional<std::vector<Triangle>> faces(const PlcFacet& facet,
+                                               const FacetSide& side,
+                                               const BoxedMesh& mesh,
+                                               const VertexTriangles& around) {
+        if (facet.loops.size() != 1 || !facet.holes.empty() || facet.loops[0].size() < 3) {
+            return std::nullopt;
+        }
+        const auto& loop = facet.loops[0];
+        std::vector<Edge> sides;  // directed, as the loop runs
+        sides.reserve(loop.size());
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            sides.push_back({loop[i], loop[(i + 1) % loop.size()]});
+        }
+        std::vector<Edge> reversed;
+        reversed.reserve(sides.size());
+        for (const Edge& e : sides) {
+            reversed.push_back({e[1], e[0]});
+        }
+        std::sort(sides.begin(), sides.end());
+        std::sort(reversed.begin(), reversed.end());
+        undirected_.clear();
+        for (const Edge& e : sides) {
+            undirected_.push_back({std::min(e[0], e[1]), std::max(e[0], e[1])});
+        }
+        std::sort(undirected_.begin(), undirected_.end());
+        if (std::adjacent_find(undirected_.begin(), undirected_.end()) != undirected_.end()) {
+            return std::nullopt;  // a side run twice: a slit, for the slow way
+        }
+        const std::uint32_t p = loop[0];
+        const std::uint32_t q = loop[1];
+        std::array<std::uint32_t, 2> seeds{};
+        std::size_t seed_count = 0;
+        for (std::uint32_t k : fewer(around, p, q)) {
+            const Triangle& g = mesh.triangles[k];
+            const std::uint32_t r = third(g, p, q);
+            if (r == kNone || side(r) != Sign::kZero) {
+                continue;
+            }
+            if (seed_count == 2) {
+                return std::nullopt;
+            }
+            seeds[seed_count++] = k;
+        }
+        for (std::size_t s = 0; s < seed_count; ++s) {
+            if (flood(
+                    seeds[s], {p, q, third(mesh.triangles[seeds[s]], p, q)}, side, mesh, around) &&
+                (boundary_ == sides || boundary_ == reversed)) {
+                std::vector<Triangle> out;
+                out.reserve(found_.size());
+                for (std::uint32_t k : found_) {
+                    out.push_back(mesh.triangles[k]);
+                }
+                return out;
+            }
+        }
+        return std::nullopt;
+    }
+
+private:
+    static constexpr std::uint32_t kNone = ~std::uint32_t{0};
+
+    /// The vertex of g other than a and b, or kNone when g lacks one of them.
+    static std::uint32_t third(const Triangle& g, std::uint32_t a, std::uint32_t b) {
+        std::uint32_t other = kNone;
+        int hits = 0;
+        for (std::uint32_t v : g) {
+            if (v == a || v == b) {
+                ++hits;
+            } else {
+                other = v;
+            }
+        }
+        return hits == 2 ? other : kNone;
+    }
+
+    /// The triangles around a or around b, whichever are fewer: those on edge ab are in both.
+    static std::span<const std::uint32_t> fewer(const VertexTriangles& around,
+                                                std::uint32_t a,
+                                                std::uint32_t b) {
+        const auto at_a = around.of(a);
+        const auto at_b = around.of(b);
+        return at_a.size() <= at_b.size() ? at_a : at_b;
+    }
+
+    bool loop_side(std::uint32_t a, std::uint32_t b) const {
+        return std::binary_search(
+            undirected_.begin(), undirected_.end(), Edge{std::min(a, b), std::max(a, b)});
+    }
+
+    /// Floods from triangle `seed` oriented as `t`; false on a boundary edge that is no loop side
+    /// or an edge with more than one coplanar triangle across. The loop sides met, directed as
+    /// the triangles run them, sorted, in boundary_; the triangles in found_.
+    bool flood(std::uint32_t seed,
+               const Triangle& t,
+               const FacetSide& side,
+               const BoxedMesh& mesh,
+               const VertexTriangles& around) {
+        ++search_;
+        boundary_.clear();
+        found_.assign(1, seed);
+        stack_.assign(1, {seed, t});
+        stamp_[seed] = search_;
+        even_[seed] = parity(t);
+        while (!stack_.empty()) {
+            const auto [k, g] = stack_.back();
+            stack_.pop_back();
+            for (std::size_t i = 0; i < 3; ++i) {
+                const std::uint32_t a = g[i];
+                const std::uint32_t b = g[(i + 1) % 3];
+                if (loop_side(a, b)) {
+                    boundary_.push_back({a, b});
+                    continue;
+                }
+                // The one other coplanar triangle on ab, run b -> a, among the triangles around
+                // the end with fewer (a vertex of a large flat polygon has hundreds).
+                std::uint32_t across = kNone;
+                std::uint32_t apex = kNone;
+                for (std::uint32_t m : fewer(around, a, b)) {
+                    const std::uint32_t r = third(mesh.triangles[m], a, b);
+                    if (m == k || r == kNone || side(r) != Sign::kZero) {
+                        continue;
+                    }
+                    if (across != kNone) {
+                        return false;
+                    }
+                    across = m;
+                    apex = r;
+                }
+                if (across == kNone) {
+                    return false;
+                }
+                const Triangle next{b, a, apex};
+                if (stamp_[across] == search_) {
+                    if (even_[across] != parity(next)) {
+                        return false;
+                    }
+                    continue;
+                }
+                stamp_[across] = search_;
+                even_[across] = parity(next);
+                found_.push_back(across);
+                stack_.push_back({across, next});
+            }
+        }
+        std::sort(boundary_.begin(), boundary_.end());
+        return true;
+    }
+
+    /// Whether t is an even permutation of its sorted vertices (which are distinct).
+    static bool parity(const Triangle& t) {
+        int inversions = 0;
+        inversions += t[0] > t[1] ? 1 : 0;
+        inversions += t[0] > t[2] ? 1 : 0;
+        inversions += t[1] > t[2] ? 1 : 0;
+        return inversions % 2 == 0;
+    }
+
+    std::vector<std::uint32_t> stamp_;  ///< by triangle: the last flood that reached it
+    std::vector<bool> even_;            ///< by triangle: its orientation in that flood
+    std::uint32_t search_ = 0;
+    std::vector<Edge> undirected_;  ///< the loop's sides, {min, max}, sorted
+    std::vector<Edge> boundary_;
+    std::vector<std::uint32_t> found_;
+    std::vector<std::pair<std::uint32_t, Triangle>> stack_;
+};
+
 /// The facet's triangles among the mesh triangles lying in its plane, after checking that no
 /// tetrahedron crosses it and, for the whole hull, that they cover its area. A carved domain holds
 /// only the part of a polygon next to its tetrahedra (none of a polygon with removed tetrahedra on
@@ -326,6 +510,7 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
                                     std::size_t index,
                                     const BoxedMesh& mesh,
                                     VertexTriangles& around,
+                                    LoopFlood& loop_flood,
                                     ScanIndex& index_of_mesh,
                                     RationalPoints& rational,
                                     SideMemo& sides,
@@ -345,6 +530,11 @@ std::vector<Triangle> polygon_faces(const Plc& plc,
         return faces;
     }
     const FacetSide side(plc, index, *plane, sides);
+    if (!carved) {
+        if (auto found = loop_flood.faces(facet, side, mesh, around)) {
+            return std::move(*found);
+        }
+    }
     const FacetRegion region(plc, facet, *plane, &rational);
     if (!carved) {
         if (auto found = covering_faces(plc, facet, *plane, region, side, mesh, around, rational)) {
@@ -558,6 +748,18 @@ void check_carved_complex(const Plc& plc,
     }
 }
 
+/// insphere_sos of points v[0..4] keyed on their indices: on the input doubles when there are
+/// no implicit points, else on the points' definitions where they are stored (copying each into a
+/// GenericPoint3, as generic_point does, cost more than most of these tests).
+Sign insphere_of(const PointSet& points, const perturbation::Keys5& v) {
+    if (points.exact.empty()) {
+        const auto& p = points.points;
+        return perturbation::insphere_sos(p[v[0]], p[v[1]], p[v[2]], p[v[3]], p[v[4]], v);
+    }
+    const auto& e = points.exact;
+    return perturbation::insphere_sos(e[v[0]], e[v[1]], e[v[2]], e[v[3]], e[v[4]], v);
+}
+
 }  // namespace
 
 CdtValidation validate_cdt(const Plc& plc,
@@ -610,21 +812,29 @@ CdtValidation validate_cdt(const Plc& plc,
         mesh.triangles.push_back(g);
     }
     VertexTriangles around(mesh.triangles, plc.points.size());
+    LoopFlood loop_flood(mesh.triangles.size());
     ScanIndex index_of_mesh;
     RationalPoints rational(plc.points);
     SideMemo side_memo(plc.points.size());
     // Sorted like the sides, so one walk along both finds the constrained ones.
     std::vector<Triangle> constrained;
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
-        for (const Triangle& g : polygon_faces(
-                 plc, f, mesh, around, index_of_mesh, rational, side_memo, carved, report)) {
+        for (const Triangle& g : polygon_faces(plc,
+                                               f,
+                                               mesh,
+                                               around,
+                                               loop_flood,
+                                               index_of_mesh,
+                                               rational,
+                                               side_memo,
+                                               carved,
+                                               report)) {
             constrained.push_back(g);
         }
     }
     std::sort(constrained.begin(), constrained.end());
     constrained.erase(std::unique(constrained.begin(), constrained.end()), constrained.end());
     result.polygon_triangles = constrained.size();
-    const ExactPoints pts{plc.points};
     auto next_constrained = constrained.begin();
     for (const auto& [g, on] : sides) {
         while (next_constrained != constrained.end() && *next_constrained < g) {
@@ -643,9 +853,7 @@ CdtValidation validate_cdt(const Plc& plc,
         // Stored mirrored, as the perturbation expects orient3d > 0; keys are the indices.
         const auto& t = tets[on.tet[0]];
         const std::uint32_t q = apex(tets[on.tet[1]], g);
-        if (perturbation::insphere_sos(
-                pts[t[1]], pts[t[0]], pts[t[2]], pts[t[3]], pts[q], {t[1], t[0], t[2], t[3], q}) ==
-            Sign::kPos) {
+        if (insphere_of(plc.points, {t[1], t[0], t[2], t[3], q}) == Sign::kPos) {
             report.add(triangle_name(g, b) + " is in no polygon and not locally Delaunay");
         }
     }

@@ -31,7 +31,13 @@ struct OwnedEdge {
 };
 
 std::vector<OwnedEdge> owned_edges(const Plc& plc) {
+    // Each edge once with its owners, in plc_edges' order, from one sort of (edge, owner) pairs:
+    // a segment is owned by kSegment, after every facet, so each run lists its facets first.
+    constexpr std::size_t kSegment = std::numeric_limits<std::size_t>::max();
     std::vector<std::pair<Edge, std::size_t>> sides;
+    for (const auto& s : plc.segments) {
+        sides.push_back({{std::min(s[0], s[1]), std::max(s[0], s[1])}, kSegment});
+    }
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
         for (const auto& loop : plc.facets[f].loops) {
             for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -44,13 +50,13 @@ std::vector<OwnedEdge> owned_edges(const Plc& plc) {
     std::sort(sides.begin(), sides.end());
     sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
     std::vector<OwnedEdge> all;
-    for (const Edge& e : plc_edges(plc)) {
-        OwnedEdge owned{e, {}};
-        auto it = std::lower_bound(sides.begin(), sides.end(), std::make_pair(e, std::size_t{0}));
-        for (; it != sides.end() && it->first == e; ++it) {
-            owned.owners.push_back(it->second);
+    for (const auto& [e, owner] : sides) {
+        if (all.empty() || all.back().edge != e) {
+            all.push_back({e, {}});
         }
-        all.push_back(std::move(owned));
+        if (owner != kSegment) {
+            all.back().owners.push_back(owner);
+        }
     }
     return all;
 }
@@ -80,23 +86,23 @@ std::string loop_name(const Plc& plc, const std::vector<std::uint32_t>& loop, st
 class FacetReport {
 public:
     FacetReport(const Plc& plc, std::size_t f, std::vector<std::string>& out)
-        : plc_(plc), facet_(plc.facets[f]), out_(out) {
-        const auto base = static_cast<std::size_t>(plc.points.index_base);
-        label_ = "facet " + std::to_string(facet_.number.value_or(f + base));
-    }
+        : plc_(plc), facet_(plc.facets[f]), index_(f), out_(out) {}
 
+    /// The facet is named only when reported: naming each of a surface mesh's facets cost more
+    /// than checking most of them.
     void add(const std::string& what) {
+        const auto base = static_cast<std::size_t>(plc_.points.index_base);
         out_.push_back(located_message(
             plc_.source,
             facet_.line == 0 ? std::nullopt : std::optional<std::size_t>(facet_.line),
-            label_ + ": " + what));
+            "facet " + std::to_string(facet_.number.value_or(index_ + base)) + ": " + what));
     }
 
 private:
     const Plc& plc_;
     const PlcFacet& facet_;
+    std::size_t index_;
     std::vector<std::string>& out_;
-    std::string label_;
 };
 
 std::string edge_name(const Plc& plc, const Edge& e) {
@@ -306,6 +312,8 @@ std::vector<std::string> protected_plc_violations(const Plc& plc) {
     BoxGrid grid(bounds, edge_boxes);
     const auto& pts = plc.points.points;
     RationalPoints rational(plc.points);
+    // By point: the facet (index + 1) whose plane its side was last found for, and the side.
+    std::vector<std::pair<std::uint32_t, int>> side_of(plc.points.size(), {0, 0});
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
         const PlcFacet& facet = plc.facets[f];
         FacetReport report(plc, f, out);
@@ -323,17 +331,20 @@ std::vector<std::string> protected_plc_violations(const Plc& plc) {
             }
         }
         const std::vector<Edge> sides = facet_sides(facet);
-        std::vector<std::uint32_t> corners;
-        for (const auto& loop : facet.loops) {
-            corners.insert(corners.end(), loop.begin(), loop.end());
-        }
-        std::sort(corners.begin(), corners.end());
         // A corner lies in the plane: no predicate needed (on a surface mesh most nearby edges
-        // end at one, and an exact zero is orient3d's most expensive answer).
+        // end at one, and an exact zero is orient3d's most expensive answer). Every other point's
+        // side is kept for the facet: a point ends several nearby edges.
+        const auto stamp = static_cast<std::uint32_t>(f + 1);
+        for (const auto& loop : facet.loops) {
+            for (std::uint32_t c : loop) {
+                side_of[c] = {stamp, 0};
+            }
+        }
         const auto side = [&](std::uint32_t v) {
-            return std::binary_search(corners.begin(), corners.end(), v)
-                       ? 0
-                       : static_cast<int>(plane->side(generic_point(plc.points, v)));
+            if (side_of[v].first != stamp) {
+                side_of[v] = {stamp, static_cast<int>(plane->side(generic_point(plc.points, v)))};
+            }
+            return side_of[v].second;
         };
         const FacetRegion region(plc, facet, *plane);
         // Whether a facet is coplanar with this one, by facet, asked once: a facet split by edge
@@ -349,8 +360,6 @@ std::vector<std::string> protected_plc_violations(const Plc& plc) {
             }
             const int sp = side(e.edge[0]);
             const int sq = side(e.edge[1]);
-            const predicates::GenericPoint3 p = generic_point(plc.points, e.edge[0]);
-            const predicates::GenericPoint3 q = generic_point(plc.points, e.edge[1]);
             // By the precondition the edge meets no side of the facet except at a shared corner,
             // so the point tested below is on no loop side and decides for the whole edge.
             if (sp == 0 && sq == 0) {
@@ -378,7 +387,12 @@ std::vector<std::string> protected_plc_violations(const Plc& plc) {
                     report.add(edge_name(plc, e.edge) + ", a side of " + facet_name(plc, *g) +
                                ", lies inside it: the two coplanar facets overlap");
                 }
-            } else if (sp * sq < 0 && crosses_facet_region(plc, facet, *plane, region, p, q)) {
+            } else if (sp * sq < 0 && crosses_facet_region(plc,
+                                                           facet,
+                                                           *plane,
+                                                           region,
+                                                           generic_point(plc.points, e.edge[0]),
+                                                           generic_point(plc.points, e.edge[1]))) {
                 report.add(edge_name(plc, e.edge) +
                            (e.owners.empty()
                                 ? " (a segment)"

@@ -4,6 +4,7 @@
 // tetrahedra of a CDT as a graph whose edges are the triangles in no polygon, so that a fill from
 // one tetrahedron stops exactly at the polygons, plus exact location of a seed point.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -45,6 +46,10 @@ public:
         }
     }
 
+    /// Makes every tetrahedron unreached again, for fills of another kind (carving and region
+    /// markers share one flood: its facet matching is most of its cost).
+    void forget_reached() { std::fill(reached_.begin(), reached_.end(), false); }
+
     /// The tetrahedra with a boundary triangle (on no other tetrahedron) that is not a wall: the
     /// seeds of the exterior, the part of the hull no polygon encloses.
     std::vector<std::uint32_t> open_hull_tets() const;
@@ -69,5 +74,8 @@ private:
     std::vector<bool> reached_;
     std::vector<std::uint32_t> stack_;  ///< reused by every fill
 };
+
+/// region_markers (cdt_regions.h) with the CDT's flood already built, every tetrahedron unreached.
+std::vector<std::int32_t> region_markers(const Plc& plc, TetFlood& flood, std::size_t tets);
 
 }  // namespace cavity::core

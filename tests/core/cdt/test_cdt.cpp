@@ -180,6 +180,89 @@ TEST(Cdt, NeedsProtection) {
     EXPECT_TRUE(std::any_of(crossed.problems.begin(), crossed.problems.end(), names_crossing));
 }
 
+/// The validator finds a one-loop polygon's triangles by a flood from its first side, checked
+/// by the flood's boundary being the loop; the scan of every simplex (what a carved domain gets)
+/// is the oracle. An L-shaped prism whose bottom is two polygons sharing a side, each listed from
+/// that side, so one of them is first flooded from the other's triangle (its boundary runs into
+/// the bottom's notch, outside the domain) and must be found from its own.
+TEST(Cdt, OneLoopPolygonsFoundFromTheirSidesAsByTheScan) {
+    std::vector<Point3> pts;
+    for (double z : {0.0, 4.0}) {
+        for (const auto& [x, y] : std::vector<std::array<double, 2>>{
+                 {0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}, {0, 2}}) {
+            pts.push_back({x, y, z});
+        }
+    }
+    for (const Point3& p : dyadic_grid_points(60, 5)) {
+        if (p.x != 2 && p.y != 2) {  // off the walls and the split of the bottom
+            pts.push_back(p);
+        }
+    }
+    const Plc plc = make_plc(pts,
+                             {{{6, 3, 4, 5}},
+                              {{3, 6, 0, 1, 2}},
+                              {{7, 8, 9, 10, 11, 12, 13}},
+                              {{0, 1, 8, 7}},
+                              {{1, 2, 9, 8}},
+                              {{2, 3, 10, 9}},
+                              {{3, 4, 11, 10}},
+                              {{4, 5, 12, 11}},
+                              {{5, 6, 13, 12}},
+                              {{6, 0, 7, 13}}});
+    const Cdt cdt = checked_cdt(plc, true);
+    const CdtValidation scanned = validate_cdt(cdt.plc, cdt.tets, CdtDomain::kCarved);
+    EXPECT_EQ(scanned.polygon_triangles, cdt.faces.size());
+}
+
+/// A flood that closes is not enough: its boundary must be the whole loop. The polygon here is two
+/// triangles touching at a corner, listed as one loop through it; the mesh is the CDT of a PLC
+/// with only the first triangle as a polygon and the second's sides as segments, plus a segment
+/// through the second, so the flood from the first side covers the first triangle and stops, and
+/// the second is crossed.
+TEST(Cdt, OneLoopPolygonFloodMustReachEveryLoopSide) {
+    auto pts = box_corners(4, 4, 0, 4);
+    const double z = 2.03125;  // off the grid below
+    const std::vector<Point3> lobes{
+        {2, 2, z}, {3.5, 2, z}, {3.5, 3.5, z}, {0.5, 2, z}, {0.5, 0.5, z}};
+    pts.insert(pts.end(), lobes.begin(), lobes.end());
+    const auto inner = dyadic_grid_points(40, 7);
+    pts.insert(pts.end(), inner.begin(), inner.end());
+    pts.push_back({1.03125, 1.46875, 1});
+    pts.push_back({1.03125, 1.46875, 3});
+    const Plc plc = make_plc(pts, {{{8, 9, 10}}}, {{8, 11}, {11, 12}, {12, 8}, {53, 54}});
+    const Cdt cdt = checked_cdt(plc, true);
+    // The second triangle's sides as protection left them: the pieces of the segments, walked
+    // round from corner 8 (either way) back to it.
+    std::vector<std::uint32_t> second;
+    std::uint32_t at = 8;
+    std::uint32_t from = ~0u;
+    for (std::size_t steps = 0; steps < cdt.plc.segments.size() && (second.empty() || at != 8);
+         ++steps) {
+        for (const auto& s : cdt.plc.segments) {
+            const std::uint32_t other = s[0] == at ? s[1] : s[1] == at ? s[0] : at;
+            if (other != at && other != from) {
+                second.push_back(other);
+                from = at;
+                at = other;
+                break;
+            }
+        }
+    }
+    ASSERT_EQ(at, 8u);
+    Plc touching = cdt.plc;
+    auto& loop = touching.facets[0].loops[0];
+    std::rotate(loop.begin(), std::find(loop.begin(), loop.end(), 8u), loop.end());
+    // Through 8 again, round the second triangle, and back to 8 (the loop's start: not listed).
+    loop.push_back(8);
+    loop.insert(loop.end(), second.begin(), second.end() - 1);
+    ASSERT_TRUE(unprotected_edges(touching, cdt.tets).empty());
+    const CdtValidation v = validate_cdt(touching, cdt.tets);
+    EXPECT_FALSE(v.ok());
+    EXPECT_TRUE(std::any_of(v.problems.begin(), v.problems.end(), [](const std::string& p) {
+        return p.find(" crosses ") != std::string::npos;
+    }));
+}
+
 /// Schönhardt's polyhedron: a twisted triangular prism whose side quadrilaterals are cut along
 /// their reflex diagonals. It has no tetrahedralization, hence no CDT without extra vertices.
 TEST(Cdt, Schoenhardt) {
