@@ -8,6 +8,7 @@
 #include "cavity/predicates/dyadic.h"
 #include "cavity/predicates/generic_predicates.h"
 #include "cavity/predicates/orient3d.h"
+#include "segment_interior.h"
 
 namespace cavity::core {
 
@@ -482,9 +483,7 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
         if (s == nullptr || same(s->a, s->b)) {
             return nullptr;
         }
-        const double n = s->numerator;
-        const double d = s->denominator;
-        return (d > 0 && n > 0 && n < d) || (d < 0 && n < 0 && n > d) ? s : nullptr;
+        return strictly_inside(*s) ? s : nullptr;
     };
     // An input point p with corner i - a = lambda (p - a), lambda > 0 (so p != a): corner i
     // itself, or the far end of a segment from a that it is inside. Null when there is none.
@@ -576,9 +575,7 @@ predicates::Sign ExactPlane::side(const predicates::GenericPoint3& p) const {
         if (const auto* s = std::get_if<predicates::SegmentParameterPoint>(&p)) {
             // orient3d is affine in its last point, so strictly inside segment ab (0 < t < 1)
             // its sign is that of the ends when they agree or one of them is zero.
-            const double n = s->numerator;
-            const double d = s->denominator;
-            if ((d > 0 && n > 0 && n < d) || (d < 0 && n < 0 && n > d)) {
+            if (strictly_inside(*s)) {
                 const predicates::Sign sa = explicit_side(s->a);
                 const predicates::Sign sb = explicit_side(s->b);
                 if (sa == sb || sb == predicates::Sign::kZero) {

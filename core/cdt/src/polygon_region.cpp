@@ -8,6 +8,7 @@
 #include "cavity/core/base/error.h"
 #include "cavity/core/mesh/star.h"
 #include "cavity/predicates/generic_predicates.h"
+#include "segment_interior.h"
 #include "split_triangle.h"
 
 namespace cavity::core {
@@ -325,12 +326,9 @@ std::uint8_t FacetGeometry::triangle_position(VertexId v) {
             known = static_cast<std::uint8_t>((1u << k) | (1u << ((k + 2) % 3)));
         }
     } else if (const auto* split = std::get_if<predicates::SegmentParameterPoint>(&x)) {
-        const double n = split->numerator;
-        const double d = split->denominator;
         const std::size_t ka = corner(split->a);
         const std::size_t kb = corner(split->b);
-        if (((d > 0 && n > 0 && n < d) || (d < 0 && n < 0 && n > d)) && ka < 3 && kb < 3 &&
-            ka != kb) {
+        if (strictly_inside(*split) && ka < 3 && kb < 3 && ka != kb) {
             known = static_cast<std::uint8_t>(1u << (kb == (ka + 1) % 3 ? ka : kb));
         }
     }
@@ -345,9 +343,7 @@ std::uint8_t FacetGeometry::triangle_position(VertexId v) {
             // orient3d is affine in its third point, so strictly inside segment ab its sign is
             // that of the ends when they agree or one of them is zero (a split point of a side
             // lies on that side's line, where an implicit point's zero is the dearest answer).
-            const double n = p->numerator;
-            const double d = p->denominator;
-            if ((d > 0 && n > 0 && n < d) || (d < 0 && n < 0 && n > d)) {
+            if (strictly_inside(*p)) {
                 const int sa = inward(i, p->a);
                 const int sb = inward(i, p->b);
                 if (sa == sb || sb == 0) {
