@@ -206,6 +206,9 @@ bool FacetGeometry::edge_crosses_region(VertexId a, VertexId b) {
                predicates::orient3d(p, q, c[1], c[2]) == first &&
                predicates::orient3d(p, q, c[2], c[0]) == first;
     }
+    if (const auto x = plane_.projected_crossing(geometry_.generic(a), geometry_.generic(b))) {
+        return region_.contains(*x);
+    }
     // The offsets are kept, so the crossing a + along (b - a) needs no plane evaluation; only
     // the coordinates the region's projection keeps are made (FacetRegion::contains).
     const Placed& pa = placed(a);

@@ -97,8 +97,10 @@ private:
     FacetRegion region_;
 
     /// A vertex's point and offset n . (p - a) in rationals, made on the first question that
-    /// needs them (a crossing point, a centroid, a speed) and kept: converting an implicit point
-    /// costs dozens of GMP operations, and most vertices are only asked for their side.
+    /// needs them (a centroid, a speed or a lifted point for polygon insertion's flips, a
+    /// crossing point that ExactPlane::projected_crossing cannot make) and kept: converting an
+    /// implicit point costs dozens of GMP operations, and most vertices are only asked for their
+    /// side.
     struct Placed {
         Rational offset;
         ExactPoint point;

@@ -1223,3 +1223,71 @@ TEST(SplitTriangle, FacesOnThePlaneAgreeWithTheRationalCentroid) {
 
 }  // namespace
 }  // namespace cavity::core
+
+namespace cavity::core {
+namespace {
+
+TEST(ExactPlane, IntegerCrossingIsTheRationalCrossing) {
+    // Planes through three input corners at scales from subnormal to huge, and segments between
+    // input points and points on segments (parameters of either sign, near 0 and 1) strictly on
+    // opposite sides: projected_crossing, in integers, must give crossing()'s rational point on
+    // every coordinate the projection keeps, including crossings exactly at a corner.
+    using predicates::SegmentParameterPoint;
+    Random random(31);
+    int tested = 0;
+    for (const double scale : {1.0, 3.0e-7, 0x1p-1060, 0x1p+900}) {
+        const auto point = [&] {
+            const auto c = [&] { return scale * (static_cast<double>(random.below(33)) - 16) / 8; };
+            return Point3{c(), c(), c()};
+        };
+        for (int plane_trial = 0; plane_trial < 20; ++plane_trial) {
+            Plc plc;
+            plc.points.points = {point(), point(), point()};
+            PlcFacet facet;
+            facet.loops = {{0, 1, 2}};
+            plc.facets = {facet};
+            const auto plane = ExactPlane::of_facet(plc, plc.facets[0]);
+            if (!plane) {
+                continue;  // collinear corners
+            }
+            const Point3 corner = plc.points.points[0];
+            const std::array<std::array<double, 2>, 5> parameters{
+                {{1, 3}, {-1, -4}, {0x1p-30, 1}, {1 - 0x1p-40, 1}, {5, 7}}};
+            const auto generic = [&]() -> predicates::GenericPoint3 {
+                if (random.below(2) == 0) {
+                    return point();
+                }
+                const auto& t = parameters[random.below(parameters.size())];
+                return SegmentParameterPoint{point(), point(), t[0], t[1]};
+            };
+            for (int trial = 0; trial < 60; ++trial) {
+                predicates::GenericPoint3 p = generic();
+                predicates::GenericPoint3 q = generic();
+                if (trial % 10 == 0) {
+                    // Through the corner exactly: p and q symmetric about it.
+                    const Point3 d = point();
+                    p = Point3{corner.x + d.x, corner.y + d.y, corner.z + d.z};
+                    q = Point3{corner.x - d.x, corner.y - d.y, corner.z - d.z};
+                }
+                const auto sp = plane->side(p);
+                const auto sq = plane->side(q);
+                if (sp == predicates::Sign::kZero || sq == predicates::Sign::kZero || sp == sq) {
+                    continue;
+                }
+                const auto fast = plane->projected_crossing(p, q);
+                ASSERT_TRUE(fast.has_value());
+                const ExactPoint slow = plane->crossing(exact_point(p), exact_point(q));
+                for (std::size_t k = 0; k < 3; ++k) {
+                    if (static_cast<int>(k) != plane->dropped_axis()) {
+                        EXPECT_EQ((*fast)[k], slow[k]) << "scale " << scale << " trial " << trial;
+                    }
+                }
+                ++tested;
+            }
+        }
+    }
+    EXPECT_GT(tested, 500);
+}
+
+}  // namespace
+}  // namespace cavity::core
