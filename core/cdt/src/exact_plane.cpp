@@ -8,6 +8,7 @@
 #include "cavity/predicates/dyadic.h"
 #include "cavity/predicates/generic_predicates.h"
 #include "cavity/predicates/orient3d.h"
+#include "segment_interior.h"
 
 namespace cavity::core {
 
@@ -482,9 +483,7 @@ std::optional<ExactPlane> ExactPlane::of_facet(const Plc& plc, const PlcFacet& f
         if (s == nullptr || same(s->a, s->b)) {
             return nullptr;
         }
-        const double n = s->numerator;
-        const double d = s->denominator;
-        return (d > 0 && n > 0 && n < d) || (d < 0 && n < 0 && n > d) ? s : nullptr;
+        return strictly_inside(*s) ? s : nullptr;
     };
     // An input point p with corner i - a = lambda (p - a), lambda > 0 (so p != a): corner i
     // itself, or the far end of a segment from a that it is inside. Null when there is none.
@@ -576,9 +575,7 @@ predicates::Sign ExactPlane::side(const predicates::GenericPoint3& p) const {
         if (const auto* s = std::get_if<predicates::SegmentParameterPoint>(&p)) {
             // orient3d is affine in its last point, so strictly inside segment ab (0 < t < 1)
             // its sign is that of the ends when they agree or one of them is zero.
-            const double n = s->numerator;
-            const double d = s->denominator;
-            if ((d > 0 && n > 0 && n < d) || (d < 0 && n < 0 && n > d)) {
+            if (strictly_inside(*s)) {
                 const predicates::Sign sa = explicit_side(s->a);
                 const predicates::Sign sb = explicit_side(s->b);
                 if (sa == sb || sb == predicates::Sign::kZero) {
@@ -598,6 +595,96 @@ ExactPoint ExactPlane::crossing(const ExactPoint& ep, const ExactPoint& eq) cons
     const Rational dq = offset(eq);
     const Rational t = dp / (dp - dq);
     return {ep[0] + t * (eq[0] - ep[0]), ep[1] + t * (eq[1] - ep[1]), ep[2] + t * (eq[2] - ep[2])};
+}
+
+namespace {
+
+/// A point as integers v / w scaled by 2^-s (v a vector, w != 0): an input point with w = 1, or
+/// a point a + (n / d)(b - a) on a segment, with n and d scaled by their own power; nullopt for
+/// a line-plane point, or a parameter 0 / 0.
+std::optional<std::pair<std::array<Integer, 3>, Integer>> homogeneous(
+    const predicates::GenericPoint3& g, int s) {
+    if (const auto* p = std::get_if<Point3>(&g)) {
+        return std::pair{scaled(*p, s), Integer(1)};
+    }
+    const auto* sp = std::get_if<predicates::SegmentParameterPoint>(&g);
+    if (sp == nullptr) {
+        return std::nullopt;
+    }
+    const int r = common_spacing(std::array<double, 2>{sp->numerator, sp->denominator});
+    if (r == std::numeric_limits<int>::max()) {
+        return std::nullopt;
+    }
+    const std::array<Integer, 3> a = scaled(sp->a, s);
+    const std::array<Integer, 3> b = scaled(sp->b, s);
+    const Integer n = scaled(sp->numerator, r);
+    Integer d = scaled(sp->denominator, r);
+    std::array<Integer, 3> v;
+    for (std::size_t k = 0; k < 3; ++k) {
+        v[k] = a[k] * d + n * (b[k] - a[k]);
+    }
+    return std::pair{std::move(v), std::move(d)};
+}
+
+/// The least spacing exponent of the doubles that define g (see common_spacing).
+int spacing_of(const predicates::GenericPoint3& g) {
+    if (const auto* p = std::get_if<Point3>(&g)) {
+        return common_spacing(std::array<double, 3>{p->x, p->y, p->z});
+    }
+    if (const auto* sp = std::get_if<predicates::SegmentParameterPoint>(&g)) {
+        return common_spacing(
+            std::array<double, 6>{sp->a.x, sp->a.y, sp->a.z, sp->b.x, sp->b.y, sp->b.z});
+    }
+    return std::numeric_limits<int>::max();
+}
+
+}  // namespace
+
+std::optional<ExactPoint> ExactPlane::projected_crossing(const predicates::GenericPoint3& p,
+                                                         const predicates::GenericPoint3& q) const {
+    if (explicit_sign_ == 0 || std::holds_alternative<predicates::LinePlanePoint>(p) ||
+        std::holds_alternative<predicates::LinePlanePoint>(q)) {
+        return std::nullopt;
+    }
+    const auto& e = explicit_;
+    int s = std::min(
+        {spacing_of(e[0]), spacing_of(e[1]), spacing_of(e[2]), spacing_of(p), spacing_of(q)});
+    if (s == std::numeric_limits<int>::max()) {
+        s = 0;  // every coordinate zero
+    }
+    auto hp = homogeneous(p, s);
+    auto hq = homogeneous(q, s);
+    if (!hp || !hq) {
+        return std::nullopt;
+    }
+    const auto& [pv, pw] = *hp;
+    const auto& [qv, qw] = *hq;
+    // Scaled by 2^-s every coordinate is an integer, and D(x) = (e1 - e0) x (e2 - e0) . (x - e0)
+    // is a constant multiple of offset(x) (the same plane). For x = v / w, D(x) = h / w with h =
+    // m . (v - e0 w), and the crossing (D(p) q - D(q) p) / (D(p) - D(q)) is
+    // (h_p q_v - h_q p_v) / (h_p q_w - h_q p_w): the same point as crossing()'s, without a
+    // rational normal, offset or reduction per operation.
+    const std::array<Integer, 3> a = scaled(e[0], s);
+    const std::array<Integer, 3> b = scaled(e[1], s);
+    const std::array<Integer, 3> c = scaled(e[2], s);
+    const std::array<Integer, 3> u{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const std::array<Integer, 3> v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const std::array<Integer, 3> m{
+        u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const Integer ma = m[0] * a[0] + m[1] * a[1] + m[2] * a[2];
+    const auto height = [&](const std::array<Integer, 3>& x, const Integer& w) {
+        return Integer(m[0] * x[0] + m[1] * x[1] + m[2] * x[2] - ma * w);
+    };
+    const Integer h_p = height(pv, pw);
+    const Integer h_q = height(qv, qw);
+    const Integer w = h_p * qw - h_q * pw;
+    ExactPoint x;
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (static_cast<int>(k) != drop_) {
+            x[k] = dyadic_quotient(Integer(h_p * qv[k] - h_q * pv[k]), w, s);
+        }
+    }
+    return x;
 }
 
 FacetRegion::FacetRegion(const Plc& plc,
@@ -640,6 +727,9 @@ bool crosses_facet_region(const Plc& plc,
         return first != predicates::Sign::kZero &&
                predicates::orient3d(p, q, corner(1), corner(2)) == first &&
                predicates::orient3d(p, q, corner(2), corner(0)) == first;
+    }
+    if (const auto x = plane.projected_crossing(p, q)) {
+        return region.contains(*x);
     }
     return region.contains(plane.crossing(exact_point(p), exact_point(q)));
 }

@@ -97,6 +97,12 @@ public:
     predicates::Sign side(const predicates::GenericPoint3& p) const;
     /// The point where segment pq meets the plane (p and q strictly on opposite sides).
     ExactPoint crossing(const ExactPoint& p, const ExactPoint& q) const;
+    /// crossing() of input points or points on segments, its coordinate along dropped_axis()
+    /// left zero (the region never reads it), computed in integers from three input corners of
+    /// the facet: nullopt when the facet has no three such corners or p or q is a line-plane
+    /// point. Each rational point and offset cost more than the region test itself.
+    std::optional<ExactPoint> projected_crossing(const predicates::GenericPoint3& p,
+                                                 const predicates::GenericPoint3& q) const;
 
     /// The coordinate dropped to project the plane one-to-one onto a coordinate plane: an axis
     /// whose normal component is not zero (exactly), the largest by a floating-point estimate.

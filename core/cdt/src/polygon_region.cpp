@@ -8,6 +8,7 @@
 #include "cavity/core/base/error.h"
 #include "cavity/core/mesh/star.h"
 #include "cavity/predicates/generic_predicates.h"
+#include "segment_interior.h"
 #include "split_triangle.h"
 
 namespace cavity::core {
@@ -122,6 +123,7 @@ FacetGeometry::FacetGeometry(const Geometry& geometry, const Plc& plc, const Plc
             triangle_corners_ = corners;
         }
     }
+    share_pieces_ = !triangle_ && !split_triangle_;
     if (triangle_corners_) {
         // The first corner moved along the dropped axis, along which h's normal is not zero.
         const Point3& c = (*triangle_corners_)[0];
@@ -189,40 +191,73 @@ bool FacetGeometry::has_left_and_right(std::span<const VertexId> vs) {
 }
 
 bool FacetGeometry::edge_crosses_region(VertexId a, VertexId b) {
-    const std::uint64_t key = (std::uint64_t{a} << 32) | b;
-    if (const auto it = edges_crossing_.find(key); it != edges_crossing_.end()) {
-        return it->second;
-    }
-    bool crosses = false;
     if (triangle_) {
-        crosses = crosses_facet_region(
+        return crosses_facet_region(
             plc_, facet_, plane_, region_, geometry_.generic(a), geometry_.generic(b));
-    } else if (split_triangle_) {
+    }
+    if (split_triangle_) {
         // As crosses_facet_region's triangle: ab turns the same way, strictly, around the three
         // sides of the corners' triangle, the region (no crossing point lies on a loop side).
         const auto& c = *split_triangle_;
         const predicates::GenericPoint3 p = geometry_.generic(a);
         const predicates::GenericPoint3 q = geometry_.generic(b);
         const predicates::Sign first = predicates::orient3d(p, q, c[0], c[1]);
-        crosses = first != predicates::Sign::kZero &&
-                  predicates::orient3d(p, q, c[1], c[2]) == first &&
-                  predicates::orient3d(p, q, c[2], c[0]) == first;
-    } else {
-        // The offsets are kept, so the crossing a + along (b - a) needs no plane evaluation; only
-        // the coordinates the region's projection keeps are made (FacetRegion::contains).
-        const Placed& pa = placed(a);
-        const Placed& pb = placed(b);
-        const Rational along = pa.offset / (pa.offset - pb.offset);
-        ExactPoint x;
-        for (std::size_t k = 0; k < 3; ++k) {
-            if (static_cast<int>(k) != plane_.dropped_axis()) {
-                x[k] = pa.point[k] + along * (pb.point[k] - pa.point[k]);
+        return first != predicates::Sign::kZero &&
+               predicates::orient3d(p, q, c[1], c[2]) == first &&
+               predicates::orient3d(p, q, c[2], c[0]) == first;
+    }
+    if (const auto x = plane_.projected_crossing(geometry_.generic(a), geometry_.generic(b))) {
+        return region_.contains(*x);
+    }
+    // The offsets are kept, so the crossing a + along (b - a) needs no plane evaluation; only
+    // the coordinates the region's projection keeps are made (FacetRegion::contains).
+    const Placed& pa = placed(a);
+    const Placed& pb = placed(b);
+    const Rational along = pa.offset / (pa.offset - pb.offset);
+    ExactPoint x;
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (static_cast<int>(k) != plane_.dropped_axis()) {
+            x[k] = pa.point[k] + along * (pb.point[k] - pa.point[k]);
+        }
+    }
+    return region_.contains(x);
+}
+
+namespace {
+
+/// The sorted key of a vertex or an edge, unused slots kGhostVertex.
+std::array<VertexId, 3> piece_key(VertexId a, VertexId b = kGhostVertex) {
+    return {std::min(a, b), std::max(a, b), kGhostVertex};
+}
+
+}  // namespace
+
+void FacetGeometry::add_pieces_on_h(std::span<const VertexId> on, Pieces& pieces) const {
+    for (std::size_t i = 0; i < on.size(); ++i) {
+        if (!corners_.contains(on[i])) {
+            pieces.keys[pieces.count++] = piece_key(on[i]);
+        }
+        for (std::size_t j = i + 1; j < on.size(); ++j) {
+            if (!side_set_.contains({std::min(on[i], on[j]), std::max(on[i], on[j])})) {
+                pieces.keys[pieces.count++] = piece_key(on[i], on[j]);
             }
         }
-        crosses = region_.contains(x);
     }
-    edges_crossing_.emplace(key, crosses);
-    return crosses;
+}
+
+std::optional<bool> FacetGeometry::known(const Pieces& pieces) const {
+    for (std::size_t k = 0; k < pieces.count; ++k) {
+        if (const auto it = pieces_in_region_.find(pieces.keys[k]); it != pieces_in_region_.end()) {
+            return it->second;
+        }
+    }
+    return std::nullopt;
+}
+
+void FacetGeometry::learn(const Pieces& pieces, bool inside) {
+    for (std::size_t k = 0; k < pieces.count; ++k) {
+        pieces_in_region_.emplace(pieces.keys[k], inside);
+    }
 }
 
 FacetGeometry::Contact FacetGeometry::contact(const TetVertices& t) {
@@ -235,13 +270,6 @@ FacetGeometry::Contact FacetGeometry::contact(const TetVertices& t) {
     for (std::size_t i = 0; i < 4; ++i) {
         sides[i] = side(t[i]);
     }
-    for (std::size_t i = 0; i < 4; ++i) {
-        for (std::size_t j = 0; j < 4; ++j) {
-            if (sides[i] < 0 && sides[j] > 0) {
-                return edge_crosses_region(t[i], t[j]) ? Contact::kCrosses : Contact::kNone;
-            }
-        }
-    }
     std::array<VertexId, 3> on{};
     std::size_t count = 0;
     for (std::size_t i = 0; i < 4; ++i) {
@@ -249,8 +277,36 @@ FacetGeometry::Contact FacetGeometry::contact(const TetVertices& t) {
             on[count++] = t[i];
         }
     }
-    return count > 0 && face_in_region(std::span(on.data(), count)) ? Contact::kTouches
-                                                                    : Contact::kNone;
+    // The section's pieces: its left-right edges' crossing points and the simplex on h.
+    Pieces pieces;
+    std::array<VertexId, 2> first{kGhostVertex, kGhostVertex};
+    for (std::size_t i = 0; i < 4; ++i) {
+        for (std::size_t j = 0; j < 4; ++j) {
+            if (sides[i] < 0 && sides[j] > 0) {
+                if (pieces.count == 0) {
+                    first = {t[i], t[j]};
+                }
+                pieces.keys[pieces.count++] = piece_key(t[i], t[j]);
+            }
+        }
+    }
+    if (pieces.count == 0) {
+        return count > 0 && face_in_region(std::span(on.data(), count)) ? Contact::kTouches
+                                                                        : Contact::kNone;
+    }
+    if (share_pieces_) {
+        add_pieces_on_h(std::span(on.data(), count), pieces);
+    } else {
+        pieces.count = 1;  // the first left-right edge alone
+    }
+    bool inside = false;
+    if (const std::optional<bool> answer = known(pieces)) {
+        inside = *answer;
+    } else {
+        inside = edge_crosses_region(first[0], first[1]);
+        learn(pieces, inside);
+    }
+    return inside ? Contact::kCrosses : Contact::kNone;
 }
 
 bool FacetGeometry::holds_triangle(const std::array<VertexId, 3>& g) {
@@ -264,15 +320,26 @@ bool FacetGeometry::face_in_region(std::span<const VertexId> on) {
     if (on.size() == 2 && side_set_.contains({std::min(on[0], on[1]), std::max(on[0], on[1])})) {
         return false;
     }
+    // The face itself first, then (when shared) its vertices and edges off the loops.
+    Pieces pieces;
     std::array<VertexId, 3> key{kGhostVertex, kGhostVertex, kGhostVertex};
     std::copy(on.begin(), on.end(), key.begin());
     std::sort(key.begin(), key.end());
-    if (const auto it = faces_in_region_.find(key); it != faces_in_region_.end()) {
-        return it->second;
+    pieces.keys[pieces.count++] = key;
+    if (share_pieces_) {
+        add_pieces_on_h(on, pieces);
     }
+    if (const std::optional<bool> answer = known(pieces)) {
+        return *answer;
+    }
+    const bool inside = face_in_region_tested(on);
+    learn(pieces, inside);
+    return inside;
+}
+
+bool FacetGeometry::face_in_region_tested(std::span<const VertexId> on) {
     if (triangle_corners_) {
         if (const std::optional<bool> inside = face_in_triangle(on)) {
-            faces_in_region_.emplace(key, *inside);
             return *inside;
         }
     }
@@ -292,9 +359,7 @@ bool FacetGeometry::face_in_region(std::span<const VertexId> on) {
             centroid[k] /= static_cast<int>(on.size());
         }
     }
-    const bool inside = region_.contains(centroid);
-    faces_in_region_.emplace(key, inside);
-    return inside;
+    return region_.contains(centroid);
 }
 
 std::uint8_t FacetGeometry::triangle_position(VertexId v) {
@@ -325,12 +390,9 @@ std::uint8_t FacetGeometry::triangle_position(VertexId v) {
             known = static_cast<std::uint8_t>((1u << k) | (1u << ((k + 2) % 3)));
         }
     } else if (const auto* split = std::get_if<predicates::SegmentParameterPoint>(&x)) {
-        const double n = split->numerator;
-        const double d = split->denominator;
         const std::size_t ka = corner(split->a);
         const std::size_t kb = corner(split->b);
-        if (((d > 0 && n > 0 && n < d) || (d < 0 && n < 0 && n > d)) && ka < 3 && kb < 3 &&
-            ka != kb) {
+        if (strictly_inside(*split) && ka < 3 && kb < 3 && ka != kb) {
             known = static_cast<std::uint8_t>(1u << (kb == (ka + 1) % 3 ? ka : kb));
         }
     }
@@ -345,9 +407,7 @@ std::uint8_t FacetGeometry::triangle_position(VertexId v) {
             // orient3d is affine in its third point, so strictly inside segment ab its sign is
             // that of the ends when they agree or one of them is zero (a split point of a side
             // lies on that side's line, where an implicit point's zero is the dearest answer).
-            const double n = p->numerator;
-            const double d = p->denominator;
-            if ((d > 0 && n > 0 && n < d) || (d < 0 && n < 0 && n > d)) {
+            if (strictly_inside(*p)) {
                 const int sa = inward(i, p->a);
                 const int sb = inward(i, p->b);
                 if (sa == sb || sb == 0) {

@@ -2,6 +2,7 @@
 
 #include <variant>
 
+#include "segment_interior.h"
 #include "triangle_intersection.h"
 
 namespace cavity::core {
@@ -10,13 +11,6 @@ namespace {
 
 bool same(const Point3& p, const Point3& q) {
     return p.x == q.x && p.y == q.y && p.z == q.z;
-}
-
-/// 0 < numerator / denominator < 1, exactly.
-bool strictly_inside(const predicates::SegmentParameterPoint& s) {
-    const double n = s.numerator;
-    const double d = s.denominator;
-    return (d > 0 && n > 0 && n < d) || (d < 0 && n < 0 && n > d);
 }
 
 }  // namespace

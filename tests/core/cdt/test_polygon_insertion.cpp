@@ -10,6 +10,7 @@
 #include <boost/multiprecision/cpp_int.hpp>
 #include <gtest/gtest.h>
 
+#include "../../../core/cdt/src/polygon_region.h"
 #include "cavity/core/base/error.h"
 #include "cavity/core/base/random.h"
 #include "cavity/core/cdt/cdt.h"
@@ -221,6 +222,25 @@ bool triangle_is_face(const PlcFacet& facet, const std::vector<Quad>& tets) {
     });
 }
 
+/// FacetGeometry answers each tetrahedron from what it learned of the others (a vertex, edge or
+/// triangle's piece of the plane is inside or outside as a whole): asked of every tetrahedron in
+/// turn, it must answer as a FacetGeometry that knows nothing else, touching included.
+void expect_contacts_as_alone(const Plc& plc,
+                              std::size_t f,
+                              const Geometry& geometry,
+                              const std::vector<Quad>& tets) {
+    FacetGeometry shared(geometry, plc, plc.facets[f]);
+    for (const Quad& t : tets) {
+        FacetGeometry alone(geometry, plc, plc.facets[f]);
+        EXPECT_EQ(shared.contact(t), alone.contact(t)) << "facet " << f;
+        for (int k = 0; k < 4; ++k) {
+            const auto g = facet_vertices(t, k);
+            FacetGeometry fresh(geometry, plc, plc.facets[f]);
+            EXPECT_EQ(shared.holds_triangle(g), fresh.holds_triangle(g)) << "facet " << f;
+        }
+    }
+}
+
 /// Protects the PLC's edges, triangulates, and inserts the polygons in order. Before each
 /// insertion, the region found by polygon_region must equal the brute-force scan, and the work
 /// record of the insertion must agree with it; the result must validate.
@@ -243,6 +263,7 @@ Inserted insert_checked(Plc& plc) {
         }
         EXPECT_EQ(found, expected) << "facet " << f;
         EXPECT_EQ(work.region_tets, expected.size()) << "facet " << f;
+        expect_contacts_as_alone(plc, f, geometry, before);
         insert_polygon(storage, geometry, plc, f, constrained, out.counters);
         const PolygonWork& done = out.counters.per_polygon.back();
         EXPECT_EQ(done.facet, f);
