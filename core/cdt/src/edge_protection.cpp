@@ -16,6 +16,7 @@
 #include "cavity/core/cdt/plc_validity.h"
 #include "cavity/core/live/delaunay_triangulation.h"
 #include "cavity/core/mesh/star.h"
+#include "dyadic_point.h"
 #include "exact_plane.h"
 #include "split_point.h"
 
@@ -199,6 +200,17 @@ bool deep_piece(const Point3& p, const Point3& q, const Point3& a, const Point3&
         return dx * dx + dy * dy + dz * dz;
     };
     return length2(p, q) < std::ldexp(length2(a, b), -2 * kShellDepth);
+}
+
+/// Split point m rounded to the nearest doubles: in integers when its parameter is dyadic (every
+/// implicit split point's is), else, or on an exact tie, by the rationals.
+Point3 rounded_split_point(const GenericPoint3& m) {
+    if (const auto* s = std::get_if<predicates::SegmentParameterPoint>(&m)) {
+        if (const std::optional<Point3> r = rounded_dyadic_point(*s)) {
+            return *r;
+        }
+    }
+    return rounded_point(m);
 }
 
 /// The live Delaunay triangulation that protect_edges inserts into, with the questions it asks
@@ -468,7 +480,7 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
             plc.points.exact.assign(plc.points.points.begin(), plc.points.points.end());
         }
         const auto id = static_cast<std::uint32_t>(plc.points.size());
-        const Point3 rounded = rounded_point(*m);
+        const Point3 rounded = rounded_split_point(*m);
         plc.points.points.push_back(rounded);
         if (!plc.points.exact.empty()) {
             plc.points.exact.push_back(*m);
