@@ -718,6 +718,88 @@ TEST(GenericPredicates, RoundedStageAgreesWithTheOracleNearDegeneracies) {
     EXPECT_EQ(tally.loose_bounds, 0u);
 }
 
+/// The point translated_rounded made against the exact translated point: true when the bound
+/// covers the distance in every coordinate.
+bool translated_bound_holds(const GenericPoint3& g, const Point3& o, const RoundedPoint& r) {
+    const Exact x = minus(cartesian(g), exact(o));
+    const Rational bound(r.error);
+    const std::array<double, 3> doubles{r.p.x, r.p.y, r.p.z};
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (abs(x[i] - Rational(doubles[i])) > bound) {
+            ADD_FAILURE() << "translated_rounded's bound " << hex(r.error) << " is below the "
+                          << "distance of " << describe(g) << " translated by " << describe(o);
+            return false;
+        }
+    }
+    return true;
+}
+
+/// translated_rounded (the predicates' first stage) bounds its distance on random explicit points
+/// and segment points of every exponent band, translated to one of their defining points or to an
+/// unrelated point, with the parameters the CDT makes (dyadic) and random ones.
+TEST(GenericPredicates, TranslatedRoundingBoundsTheDistance) {
+    Source s(31);
+    std::size_t checked = 0;
+    for_random_mixes(
+        s,
+        /*rounded_edges=*/true,
+        [](Source& t, Range r) -> GenericPoint3 {
+            if (t.integer(0, 2) == 0) {
+                const int j = t.integer(1, 53);  // the CDT's n / 2^j, n odd below 2^j
+                const double n =
+                    std::ldexp(std::floor(std::ldexp(std::abs(t.unit()), j - 1)), 1) + 1;
+                return SegmentParameterPoint{
+                    t.point(r.lo, r.hi), t.point(r.lo, r.hi), n, std::ldexp(1.0, j)};
+            }
+            return random_generic(t, t.integer(0, 1), r.lo, r.hi);
+        },
+        [&](const std::array<GenericPoint3, 5>& g) {
+            // As the predicates translate: to a point that defines one of the query's points.
+            const auto* spp = std::get_if<SegmentParameterPoint>(&g[1]);
+            const Point3 o = spp != nullptr ? spp->b : std::get<Point3>(g[1]);
+            for (const GenericPoint3& p : g) {
+                for (const Point3& origin : {o, Point3{}}) {
+                    if (const auto r = translated_rounded(p, origin)) {
+                        if (std::isfinite(r->error)) {
+                            ++checked;
+                            EXPECT_TRUE(translated_bound_holds(p, origin, *r));
+                        }
+                    }
+                }
+            }
+        });
+    EXPECT_GT(checked, queries());
+}
+
+/// Parameters at the edges of the doubles: zero (exact), underflowing (no direct rounding),
+/// overflowing and differences that overflow (an infinite bound, never a wrong one), and the bound
+/// is tight where nothing is extreme.
+TEST(GenericPredicates, TranslatedRoundingAtExtremeParameters) {
+    const Point3 a{0.3, -0.7, 0.1}, b{0.9, 0.2, -0.4}, o{0.1, 0.1, 0.1};
+    const auto zero = translated_rounded(SegmentParameterPoint{a, b, 0.0, 3.0}, o);
+    ASSERT_TRUE(zero);
+    EXPECT_TRUE(translated_bound_holds(SegmentParameterPoint{a, b, 0.0, 3.0}, o, *zero));
+    EXPECT_FALSE(translated_rounded(SegmentParameterPoint{a, b, 0x1p-1074, 0x1p100}, o));
+    EXPECT_FALSE(translated_rounded(SegmentParameterPoint{a, b, 0x1p-600, 0x1p500}, o));
+    EXPECT_FALSE(translated_rounded(LinePlanePoint{a, b, o, Point3{1, 0, 0}, Point3{0, 1, 0}}, o));
+    const double huge = std::numeric_limits<double>::max();
+    for (const GenericPoint3& g :
+         {GenericPoint3(SegmentParameterPoint{a, b, huge, 0x1p-10}),
+          GenericPoint3(SegmentParameterPoint{Point3{-huge, 0, 0}, Point3{huge, 1, 1}, 1.0, 3.0}),
+          GenericPoint3(Point3{-huge, 0, 0})}) {
+        const auto r = translated_rounded(g, Point3{huge, 0, 0});
+        ASSERT_TRUE(r);
+        EXPECT_FALSE(std::isfinite(r->error) && std::isfinite(r->p.x) && std::isfinite(r->p.y) &&
+                     std::isfinite(r->p.z));
+    }
+    // A third of the way along a unit segment: within a few ulps of the exact point.
+    const GenericPoint3 third = SegmentParameterPoint{a, b, 1.0, 3.0};
+    const auto r = translated_rounded(third, o);
+    ASSERT_TRUE(r);
+    EXPECT_TRUE(translated_bound_holds(third, o, *r));
+    EXPECT_LT(r->error, 0x1p-48);
+}
+
 TEST(GenericPredicates, RoundingErrorIsZeroOnlyForTheExactDoubles) {
     const Point3 a{1, 2, 3}, b{2, 2, 3};
     EXPECT_EQ(rounding_error(GenericPoint3(a), a), 0.0);

@@ -70,7 +70,74 @@ std::optional<std::optional<double>> coordinate(double a, double b, std::int64_t
     return std::optional<double>(n < 0 ? -value : value);
 }
 
+/// The double nearest to (2^j - n) a + n b scaled by 2^-j; nullopt as rounded_dyadic_point says.
+std::optional<double> rounded_coordinate(double a, double b, std::int64_t n, int j) {
+    const Scaled sa = scaled(a);
+    const Scaled sb = scaled(b);
+    int e = 0;
+    if (sa.mantissa != 0 && sb.mantissa != 0) {
+        e = std::min(sa.exponent, sb.exponent);
+    } else {
+        e = sa.mantissa != 0 ? sa.exponent : sb.exponent;
+    }
+    // Each term below 2^(53 + shift + j), their sum below twice that: 127 bits at most.
+    const int shift = std::max(sa.exponent, sb.exponent) - e;
+    if (53 + shift + j + 1 > 126) {
+        return std::nullopt;
+    }
+    const auto aligned = [&](const Scaled& s) {
+        return s.mantissa == 0 ? Int128{0} : Int128{s.mantissa} * (Int128{1} << (s.exponent - e));
+    };
+    const Int128 sum = aligned(sa) * ((std::int64_t{1} << j) - n) + aligned(sb) * n;
+    if (sum == 0) {
+        return 0.0;
+    }
+    const Uint128 magnitude = sum < 0 ? -static_cast<Uint128>(sum) : static_cast<Uint128>(sum);
+    const auto high = static_cast<std::uint64_t>(magnitude >> 64);
+    const int bits = high != 0 ? 128 - std::countl_zero(high)
+                               : 64 - std::countl_zero(static_cast<std::uint64_t>(magnitude));
+    const int exponent = e - j;  // value = magnitude 2^exponent
+    if (exponent + bits - 1 < -1022) {
+        return std::nullopt;  // below the normals: leave the spacing's subtleties to the rationals
+    }
+    const int dropped = std::max(bits - 53, 0);
+    Uint128 kept = magnitude >> dropped;
+    if (dropped > 0) {
+        const Uint128 rest = magnitude & ((Uint128{1} << dropped) - 1);
+        const Uint128 half = Uint128{1} << (dropped - 1);
+        if (rest == half) {
+            return std::nullopt;
+        }
+        kept += rest > half ? 1 : 0;  // 2^53 at most: still a double
+    }
+    const double value =
+        std::ldexp(static_cast<double>(static_cast<std::uint64_t>(kept)), exponent + dropped);
+    return sum < 0 ? -value : value;
+}
+
 }  // namespace
+
+std::optional<Point3> rounded_dyadic_point(const predicates::SegmentParameterPoint& s) {
+    int exponent = 0;
+    const double fraction = std::frexp(s.denominator, &exponent);
+    const int j = exponent - 1;  // denominator = 2^j when fraction is 1/2
+    if (fraction != 0.5 || j < 1 || j > 62 || !(s.numerator > 0) ||
+        !(s.numerator < s.denominator) || std::trunc(s.numerator) != s.numerator) {
+        return std::nullopt;
+    }
+    const auto n = static_cast<std::int64_t>(s.numerator);
+    const double as[3] = {s.a.x, s.a.y, s.a.z};
+    const double bs[3] = {s.b.x, s.b.y, s.b.z};
+    double out[3] = {};
+    for (int c = 0; c < 3; ++c) {
+        const std::optional<double> v = rounded_coordinate(as[c], bs[c], n, j);
+        if (!v) {
+            return std::nullopt;
+        }
+        out[c] = *v;
+    }
+    return Point3{out[0], out[1], out[2]};
+}
 
 DyadicPoint dyadic_point(const Point3& a, const Point3& b, std::int64_t k, int j) {
     const double as[3] = {a.x, a.y, a.z};

@@ -16,6 +16,7 @@
 #include "cavity/core/cdt/plc_validity.h"
 #include "cavity/core/live/delaunay_triangulation.h"
 #include "cavity/core/mesh/star.h"
+#include "dyadic_point.h"
 #include "exact_plane.h"
 #include "split_point.h"
 
@@ -201,6 +202,17 @@ bool deep_piece(const Point3& p, const Point3& q, const Point3& a, const Point3&
     return length2(p, q) < std::ldexp(length2(a, b), -2 * kShellDepth);
 }
 
+/// Split point m rounded to the nearest doubles: in integers when its parameter is dyadic (every
+/// implicit split point's is), else, or on an exact tie, by the rationals.
+Point3 rounded_split_point(const GenericPoint3& m) {
+    if (const auto* s = std::get_if<predicates::SegmentParameterPoint>(&m)) {
+        if (const std::optional<Point3> r = rounded_dyadic_point(*s)) {
+            return *r;
+        }
+    }
+    return rounded_point(m);
+}
+
 /// The live Delaunay triangulation that protect_edges inserts into, with the questions it asks
 /// by the PLC's point indices.
 class ProtectionMesh {
@@ -213,24 +225,30 @@ public:
         }
     }
 
-    /// The live tetrahedra around point i (its star), in vertex_star's order (the breadth-first
-    /// order from the vertex's tetrahedron), with a stamp per tetrahedron marking those found:
-    /// vertex_star looks each one up in the list, quadratic in the star, and the stars of the
-    /// vertices on long split segments hold hundreds of tetrahedra.
-    std::vector<TetId> star(std::uint32_t i) {
-        return vertex_star(dt_.storage(), vertex_[i], first_reach());
+    /// The live tetrahedra around point i (its star) into `star`, in vertex_star's order (the
+    /// breadth-first order from the vertex's tetrahedron), with a stamp per tetrahedron marking
+    /// those found: vertex_star looks each one up in the list, quadratic in the star, and the
+    /// stars of the vertices on long split segments hold hundreds of tetrahedra.
+    void star(std::uint32_t i, std::vector<TetId>& star) {
+        vertex_star_into(
+            dt_.storage(), vertex_[i], first_reach(), [](TetId) { return false; }, star);
     }
 
-    /// star(i), or nullopt when point j is a vertex of one of its tetrahedra (ij is an edge): the
-    /// search stops at the first such tetrahedron, where most pieces asked about are edges. A
-    /// star returned is in star(i)'s order.
-    std::optional<std::vector<TetId>> star_unless_edge(std::uint32_t i, std::uint32_t j) {
+    /// star(i, star), returning true, or false when point j is a vertex of one of its tetrahedra
+    /// (ij is an edge): the search stops at the first such tetrahedron, where most pieces asked
+    /// about are edges.
+    bool star_unless_edge(std::uint32_t i, std::uint32_t j, std::vector<TetId>& star) {
         const ArrayStorage& storage = dt_.storage();
         const VertexId w = vertex_[j];
-        return vertex_star_unless(storage, vertex_[i], first_reach(), [&](TetId t) {
-            const TetVertices& x = storage.vertices(t);
-            return std::find(x.begin(), x.end(), w) != x.end();
-        });
+        return vertex_star_into(
+            storage,
+            vertex_[i],
+            first_reach(),
+            [&](TetId t) {
+                const TetVertices& x = storage.vertices(t);
+                return std::find(x.begin(), x.end(), w) != x.end();
+            },
+            star);
     }
 
     /// Inserts the point with index point_count(), exactly `exact`, rounded `rounded`.
@@ -248,7 +266,8 @@ public:
         ++insertions_;
         neighbour_of_.resize(vertex_.size());
         const Geometry& g = dt_.geometry();
-        for (TetId t : star(key)) {
+        star(key, scratch_);
+        for (TetId t : scratch_) {
             for (VertexId w : dt_.storage().vertices(t)) {
                 if (w == kGhostVertex || w == vertex_[key]) {
                     continue;
@@ -362,6 +381,7 @@ private:
     std::vector<std::vector<std::uint64_t>> neighbour_of_;
     std::vector<std::uint32_t> listed_;
     std::uint64_t insertions_ = 0;
+    std::vector<TetId> scratch_;  ///< the new point's star in insert()
 };
 
 }  // namespace
@@ -401,11 +421,15 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
     // only an insertion since then whose point neighbours both its ends can have removed it, and
     // the others need no star search (homer: 291223 searches, most of them in these passes).
     std::vector<Edge> pieces = plc_edges(plc);
+    // The stars of a piece's ends, their vectors kept across iterations: growing fresh ones was
+    // three quarters of the cost of the searches themselves.
+    std::vector<TetId> star_p;
+    std::vector<TetId> star_q;
     const auto recheck = [&](ShortestFirst& out) {
         ++result.rounds;
         for (const Edge& e : pieces) {
             if (!split_at.contains(edge_key(e[0], e[1])) && mesh.maybe_removed(e[0], e[1]) &&
-                mesh.star_unless_edge(e[0], e[1])) {
+                mesh.star_unless_edge(e[0], e[1], star_p)) {
                 out.push(e);
             }
         }
@@ -413,8 +437,7 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
     };
     while (!queue.empty()) {
         const Edge e = queue.pop();
-        const std::optional<std::vector<TetId>> star_p = mesh.star_unless_edge(e[0], e[1]);
-        if (!star_p) {
+        if (!mesh.star_unless_edge(e[0], e[1], star_p)) {
             if (queue.empty()) {
                 recheck(queue);
             }
@@ -428,7 +451,7 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
                                         "still not edge-protected after inserting " +
                                             std::to_string(max_points) + " points (" + name + ")"));
         }
-        const std::vector<TetId> star_q = mesh.star(e[1]);
+        mesh.star(e[1], star_q);
         // Only a split point aims the split (the window that frees the piece of it). An input
         // vertex that encroaches is most often the apex of a skinny input triangle on pq: a
         // split in its window stands about its height from it and starts cascades there, which
@@ -442,7 +465,7 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
         const Edge segment = segment_of_piece(e);
         const Point3 p = plc.points.points[e[0]];
         const Point3 q = plc.points.points[e[1]];
-        if (const auto w = mesh.reference(*star_p, star_q, e[0], e[1]); w && *w >= inputs) {
+        if (const auto w = mesh.reference(star_p, star_q, e[0], e[1]); w && *w >= inputs) {
             reference = plc.points.points[*w];
             const Edge host = segment_of[*w - inputs];
             for (const std::uint32_t c : e) {
@@ -468,7 +491,7 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
             plc.points.exact.assign(plc.points.points.begin(), plc.points.points.end());
         }
         const auto id = static_cast<std::uint32_t>(plc.points.size());
-        const Point3 rounded = rounded_point(*m);
+        const Point3 rounded = rounded_split_point(*m);
         plc.points.points.push_back(rounded);
         if (!plc.points.exact.empty()) {
             plc.points.exact.push_back(*m);

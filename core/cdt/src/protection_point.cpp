@@ -12,7 +12,10 @@
 // within 2^-60 of its range from zero) form one piece, solved with the spacing of its top binade,
 // which finds only the points there whose coordinate is a multiple of that spacing (zero included).
 // Everything found is a double point of the segment: the spacing used is never finer than the
-// binade's.
+// binade's. Between decimal doubles nearly every window holds no such point; a sieve of integer
+// congruences (double_point_sieve.h) says so first, without a rational.
+#include "protection_point.h"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -21,6 +24,7 @@
 #include <boost/multiprecision/gmp.hpp>
 
 #include "cavity/core/cdt/edge_protection.h"
+#include "double_point_sieve.h"
 
 namespace cavity::core {
 
@@ -85,7 +89,9 @@ std::optional<Progression> intersect(const Progression& p, const Progression& q)
 /// Spacing exponent q of the doubles in the binade of |v| (v != 0): doubles there are the
 /// multiples of 2^q.
 int spacing_exponent(const Rational& v) {
-    // mpq_get_d truncates toward zero, which keeps the binade: powers of two are doubles.
+    // convert_to<double> rounds to nearest, so a value just below a power of two may give the
+    // spacing of the binade above: a coarser one, whose multiples are doubles in this binade too,
+    // so the progression loses points but every point it keeps is still a double.
     const double d = std::abs(v.convert_to<double>());
     if (d < std::ldexp(1.0, -1022)) {
         return -1074;
@@ -145,6 +151,16 @@ std::optional<Point3> protection_point(const Point3& a, const Point3& b) {
 }
 
 std::optional<Point3> protection_point(
+    const Point3& a, const Point3& b, double target, double lo_bound, double hi_bound) {
+    const double lo = std::max(lo_bound, 0.0);
+    const double hi = std::min(hi_bound, 1.0);
+    if (!(lo < hi) || !may_hold_double_point(a, b, lo, hi)) {
+        return std::nullopt;
+    }
+    return rational_protection_point(a, b, target, lo_bound, hi_bound);
+}
+
+std::optional<Point3> rational_protection_point(
     const Point3& a, const Point3& b, double target, double lo_bound, double hi_bound) {
     const std::array<double, 3> pa{a.x, a.y, a.z};
     const std::array<double, 3> pb{b.x, b.y, b.z};

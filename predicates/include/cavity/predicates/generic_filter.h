@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <tuple>
 
 #include "cavity/predicates/detail/insphere_filter.h"
@@ -63,6 +64,12 @@ struct RoundedPoint {
 /// An upper bound on max |g - r| over the three coordinates (0 when g is the explicit point r),
 /// +inf when it cannot be bounded (r not finite, or the filter cannot tell g's W from zero).
 double rounding_error(const GenericPoint3& g, const Point3& r);
+
+/// Point g translated by -o, in doubles, with a bound on their distance to the exact translated
+/// point in every coordinate, computed without intervals: the generic predicates' first stage,
+/// several times cheaper than their interval rows. nullopt for a LinePlanePoint (its rounding
+/// divides two degree-4 expressions) and for a SegmentParameterPoint whose parameter underflows.
+std::optional<RoundedPoint> translated_rounded(const GenericPoint3& g, const Point3& o);
 
 namespace detail {
 

@@ -27,29 +27,31 @@ EdgeRing edge_ring(const ArrayStorage& storage, TetId t, int i, int j);
 /// contain v, starting at Adjacent2Vertex(v). Empty when v is not a vertex.
 std::vector<TetId> vertex_star(const ArrayStorage& storage, VertexId v);
 
-/// vertex_star, with the caller keeping track of the tetrahedra reached, and stopping early:
-/// `first_reach(star, t)` returns whether t is reached for the first time (the tetrahedra so far
-/// are `star`) and remembers it; the search gives up, returning nullopt, at the first tetrahedron
-/// t of the star (in search order) for which `stop(t)` holds. vertex_star looks t up in `star`,
-/// quadratic in the star's size; a caller that gathers many large stars (edge protection) marks
-/// tetrahedra instead, and one that only needs the star when some vertex is not in it (is uv an
-/// edge?) stops there. Same order either way.
+/// vertex_star, with the caller keeping track of the tetrahedra reached, stopping early, and
+/// filling the caller's `star` (cleared first): `first_reach(star, t)` returns whether t is reached
+/// for the first time (the tetrahedra so far are `star`) and remembers it; the search gives up,
+/// returning false, at the first tetrahedron t of the star (in search order) for which `stop(t)`
+/// holds. vertex_star looks t up in `star`, quadratic in the star's size; a caller that gathers
+/// many large stars (edge protection) marks tetrahedra instead, keeps one vector for them (growing
+/// a fresh one per search cost three quarters as much as the search), and one that only needs the
+/// star when some vertex is not in it (is uv an edge?) stops there. Same order either way.
 template <class FirstReach, class Stop>
-std::optional<std::vector<TetId>> vertex_star_unless(const ArrayStorage& storage,
-                                                     VertexId v,
-                                                     FirstReach&& first_reach,
-                                                     Stop&& stop) {
-    std::vector<TetId> star;
+bool vertex_star_into(const ArrayStorage& storage,
+                      VertexId v,
+                      FirstReach&& first_reach,
+                      Stop&& stop,
+                      std::vector<TetId>& star) {
+    star.clear();
     const TetId start = storage.tet_at_vertex(v);
     if (start == kNoTet) {
-        return star;
+        return true;
     }
     first_reach(star, start);
     star.push_back(start);
     for (std::size_t k = 0; k < star.size(); ++k) {
         const TetId t = star[k];
         if (stop(t)) {
-            return std::nullopt;
+            return false;
         }
         const TetVertices& w = storage.vertices(t);
         for (int f = 0; f < 4; ++f) {
@@ -61,6 +63,20 @@ std::optional<std::vector<TetId>> vertex_star_unless(const ArrayStorage& storage
                 star.push_back(tet_of(h));
             }
         }
+    }
+    return true;
+}
+
+/// vertex_star_into in a vector of its own: the star, or nullopt when the search stopped.
+template <class FirstReach, class Stop>
+std::optional<std::vector<TetId>> vertex_star_unless(const ArrayStorage& storage,
+                                                     VertexId v,
+                                                     FirstReach&& first_reach,
+                                                     Stop&& stop) {
+    std::vector<TetId> star;
+    if (!vertex_star_into(
+            storage, v, std::forward<FirstReach>(first_reach), std::forward<Stop>(stop), star)) {
+        return std::nullopt;
     }
     return star;
 }
