@@ -8,13 +8,11 @@
 #include <utility>
 
 #include "cavity/predicates/dyadic.h"
+#include "wide_integer.h"
 
 namespace cavity::core {
 
 namespace {
-
-__extension__ using Int128 = __int128;
-__extension__ using Uint128 = unsigned __int128;
 
 /// Integers stay below 2^kMaxBits in magnitude: their difference still fits a signed 128-bit one.
 constexpr int kMaxBits = 125;
@@ -26,21 +24,16 @@ struct Binary {
 };
 
 Binary binary(double x) {
-    const int e = predicates::spacing_exponent(x);
-    const auto mantissa = static_cast<std::int64_t>(std::ldexp(x, -e));
+    const SplitDouble s = split_double(x);
     const int zeros =
-        std::countr_zero(static_cast<std::uint64_t>(mantissa < 0 ? -mantissa : mantissa));
-    return {mantissa >> zeros, e + zeros};
+        std::countr_zero(static_cast<std::uint64_t>(s.mantissa < 0 ? -s.mantissa : s.mantissa));
+    return {s.mantissa >> zeros, s.exponent + zeros};
 }
 
 int trailing_zeros(Uint128 x) {
     const auto low = static_cast<std::uint64_t>(x);
     return low != 0 ? std::countr_zero(low)
                     : 64 + std::countr_zero(static_cast<std::uint64_t>(x >> 64));
-}
-
-Uint128 magnitude(Int128 x) {
-    return x < 0 ? -static_cast<Uint128>(x) : static_cast<Uint128>(x);
 }
 
 /// Binary gcd (x, y not both zero).

@@ -6,37 +6,21 @@
 #include <optional>
 
 #include "cavity/predicates/dyadic.h"
+#include "wide_integer.h"
 
 namespace cavity::core {
 
 namespace {
 
-__extension__ using Int128 = __int128;
-__extension__ using Uint128 = unsigned __int128;
-
 /// Binades whose spacings differ by more than this do not fit the integers: 53 + 60 bits for the
 /// finer-scaled coordinate, 10 more for the factor, one for the sum, and the sign stay below 128.
 constexpr int kMaxShift = 60;
 
-/// x = mantissa * 2^exponent with |mantissa| < 2^53 (x == 0: mantissa 0).
-struct Scaled {
-    std::int64_t mantissa;
-    int exponent;
-};
-
-Scaled scaled(double x) {
-    if (x == 0.0) {
-        return {0, 0};
-    }
-    const int e = predicates::spacing_exponent(x);
-    return {static_cast<std::int64_t>(std::ldexp(x, -e)), e};
-}
-
 /// (2^j - k) a + k b scaled by 2^-j, when it is a double; nullopt when it is not; the outer
 /// nullopt when undecided.
 std::optional<std::optional<double>> coordinate(double a, double b, std::int64_t k, int j) {
-    const Scaled sa = scaled(a);
-    const Scaled sb = scaled(b);
+    const SplitDouble sa = split_double(a);
+    const SplitDouble sb = split_double(b);
     // The exponent of the common spacing: the finer one of the nonzero terms.
     int e = 0;
     if (sa.mantissa != 0 && sb.mantissa != 0) {
@@ -47,7 +31,7 @@ std::optional<std::optional<double>> coordinate(double a, double b, std::int64_t
     } else {
         e = sa.mantissa != 0 ? sa.exponent : sb.exponent;
     }
-    const auto aligned = [&](const Scaled& s) {
+    const auto aligned = [&](const SplitDouble& s) {
         return s.mantissa == 0 ? Int128{0} : Int128{s.mantissa} * (Int128{1} << (s.exponent - e));
     };
     const Int128 n = aligned(sa) * ((std::int64_t{1} << j) - k) + aligned(sb) * k;
@@ -57,11 +41,11 @@ std::optional<std::optional<double>> coordinate(double a, double b, std::int64_t
     // n 2^(e - j) = m 2^(e - j + z) with m odd: a double exactly when m has at most 53 bits and
     // its last bit is not below the subnormals' spacing (no overflow: the point lies between a and
     // b).
-    const Uint128 magnitude = n < 0 ? -static_cast<Uint128>(n) : static_cast<Uint128>(n);
-    const auto low = static_cast<std::uint64_t>(magnitude);
+    const Uint128 size = magnitude(n);
+    const auto low = static_cast<std::uint64_t>(size);
     const int z = low != 0 ? std::countr_zero(low)
-                           : 64 + std::countr_zero(static_cast<std::uint64_t>(magnitude >> 64));
-    const Uint128 odd = magnitude >> z;
+                           : 64 + std::countr_zero(static_cast<std::uint64_t>(size >> 64));
+    const Uint128 odd = size >> z;
     const int exponent = e - j + z;
     if ((odd >> 53) != 0 || exponent < -1074) {
         return std::optional<double>();
@@ -72,8 +56,8 @@ std::optional<std::optional<double>> coordinate(double a, double b, std::int64_t
 
 /// The double nearest to (2^j - n) a + n b scaled by 2^-j; nullopt as rounded_dyadic_point says.
 std::optional<double> rounded_coordinate(double a, double b, std::int64_t n, int j) {
-    const Scaled sa = scaled(a);
-    const Scaled sb = scaled(b);
+    const SplitDouble sa = split_double(a);
+    const SplitDouble sb = split_double(b);
     int e = 0;
     if (sa.mantissa != 0 && sb.mantissa != 0) {
         e = std::min(sa.exponent, sb.exponent);
@@ -85,25 +69,25 @@ std::optional<double> rounded_coordinate(double a, double b, std::int64_t n, int
     if (53 + shift + j + 1 > 126) {
         return std::nullopt;
     }
-    const auto aligned = [&](const Scaled& s) {
+    const auto aligned = [&](const SplitDouble& s) {
         return s.mantissa == 0 ? Int128{0} : Int128{s.mantissa} * (Int128{1} << (s.exponent - e));
     };
     const Int128 sum = aligned(sa) * ((std::int64_t{1} << j) - n) + aligned(sb) * n;
     if (sum == 0) {
         return 0.0;
     }
-    const Uint128 magnitude = sum < 0 ? -static_cast<Uint128>(sum) : static_cast<Uint128>(sum);
-    const auto high = static_cast<std::uint64_t>(magnitude >> 64);
+    const Uint128 size = magnitude(sum);
+    const auto high = static_cast<std::uint64_t>(size >> 64);
     const int bits = high != 0 ? 128 - std::countl_zero(high)
-                               : 64 - std::countl_zero(static_cast<std::uint64_t>(magnitude));
-    const int exponent = e - j;  // value = magnitude 2^exponent
+                               : 64 - std::countl_zero(static_cast<std::uint64_t>(size));
+    const int exponent = e - j;  // value = size 2^exponent
     if (exponent + bits - 1 < -1022) {
         return std::nullopt;  // below the normals: leave the spacing's subtleties to the rationals
     }
     const int dropped = std::max(bits - 53, 0);
-    Uint128 kept = magnitude >> dropped;
+    Uint128 kept = size >> dropped;
     if (dropped > 0) {
-        const Uint128 rest = magnitude & ((Uint128{1} << dropped) - 1);
+        const Uint128 rest = size & ((Uint128{1} << dropped) - 1);
         const Uint128 half = Uint128{1} << (dropped - 1);
         if (rest == half) {
             return std::nullopt;
