@@ -44,9 +44,16 @@ EdgeRing edge_ring(const ArrayStorage& storage, TetId t, int i, int j) {
 }
 
 std::vector<TetId> vertex_star(const ArrayStorage& storage, VertexId v) {
-    return vertex_star(storage, v, [](const std::vector<TetId>& star, TetId t) {
-        return std::find(star.begin(), star.end(), t) == star.end();
-    });
+    std::vector<TetId> star;
+    vertex_star_into(
+        storage,
+        v,
+        [](const std::vector<TetId>& reached, TetId t) {
+            return std::find(reached.begin(), reached.end(), t) == reached.end();
+        },
+        [](TetId) { return false; },
+        star);
+    return star;
 }
 
 }  // namespace cavity::core

@@ -1,8 +1,6 @@
 #pragma once
 
 #include <cstddef>
-#include <optional>
-#include <utility>
 #include <vector>
 
 #include "cavity/core/mesh/array_storage.h"
@@ -65,27 +63,6 @@ bool vertex_star_into(const ArrayStorage& storage,
         }
     }
     return true;
-}
-
-/// vertex_star_into in a vector of its own: the star, or nullopt when the search stopped.
-template <class FirstReach, class Stop>
-std::optional<std::vector<TetId>> vertex_star_unless(const ArrayStorage& storage,
-                                                     VertexId v,
-                                                     FirstReach&& first_reach,
-                                                     Stop&& stop) {
-    std::vector<TetId> star;
-    if (!vertex_star_into(
-            storage, v, std::forward<FirstReach>(first_reach), std::forward<Stop>(stop), star)) {
-        return std::nullopt;
-    }
-    return star;
-}
-
-/// vertex_star_unless without the early stop.
-template <class FirstReach>
-std::vector<TetId> vertex_star(const ArrayStorage& storage, VertexId v, FirstReach&& first_reach) {
-    return *vertex_star_unless(
-        storage, v, std::forward<FirstReach>(first_reach), [](TetId) { return false; });
 }
 
 /// The slot of vertex v in t, or -1.
