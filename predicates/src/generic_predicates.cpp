@@ -10,14 +10,13 @@
 #include <utility>
 #include <variant>
 
-#include <boost/multiprecision/gmp.hpp>
-
 #include "cavity/predicates/dyadic.h"
 #include "cavity/predicates/generic_filter.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"
 #include "coplanarity_certificate.h"
 #include "homogeneous.h"
+#include "homogeneous_exact.h"
 #include "interval.h"
 
 // Filter, then exact, on the homogeneous coordinates (homogeneous.h).
@@ -45,23 +44,19 @@
 // the W exclude zero. What the filter leaves is mostly
 // exactly coplanar (flat hull faces, the validator's checks); coplanarity_certificate.h proves
 // those zeros from exact orient3d on the defining doubles, some twenty times cheaper than the
-// integers. The exact stage evaluates the same formulas over GMP integers after scaling the
+// integers. The exact stage evaluates the same formulas over GMP integers, in place
+// (homogeneous_exact.h), after scaling the
 // defining doubles to integers (homogeneous.h says why that keeps the signs).
 namespace cavity::predicates {
 
 namespace {
 
-using Integer =
-    boost::multiprecision::number<boost::multiprecision::gmp_int, boost::multiprecision::et_off>;
+using Integer = detail::ExactInteger;
 using detail::Homogeneous;
 using detail::Interval;
 using detail::Matrix;
 
 int sign_of(const Interval& x) {
-    return x.sign();
-}
-
-int sign_of(const Integer& x) {
     return x.sign();
 }
 
@@ -293,7 +288,7 @@ Verdict orient3d_staged(const GenericPoint3& a,
     if (detail::certified_coplanar(g)) {
         return {Sign::kZero, Stage::kExact};
     }
-    return {static_cast<Sign>(orient3d_sign(exact_rows(g))), Stage::kExact};
+    return {static_cast<Sign>(detail::homogeneous_orient3d_sign(exact_rows(g))), Stage::kExact};
 }
 
 Verdict insphere_staged(const GenericPoint3& a,
@@ -330,7 +325,7 @@ Verdict insphere_staged(const GenericPoint3& a,
     if (detail::certified_coplanar(g)) {
         return {Sign::kZero, Stage::kExact};
     }
-    return {static_cast<Sign>(insphere_sign(exact_rows(g))), Stage::kExact};
+    return {static_cast<Sign>(detail::homogeneous_insphere_sign(exact_rows(g))), Stage::kExact};
 }
 
 double rounding_error(const GenericPoint3& g, const Point3& r) {
