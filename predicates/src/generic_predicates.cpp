@@ -134,9 +134,10 @@ std::array<Homogeneous<Integer>, N> exact_rows(const std::array<const GenericPoi
     }
     std::array<Homogeneous<Integer>, N> rows;
     for (std::size_t i = 0; i < N; ++i) {
-        int parameter_scale = 0;
         if (const auto* s = std::get_if<SegmentParameterPoint>(g[i])) {
-            parameter_scale = common_scale({s->numerator, s->denominator}, INT_MAX);
+            rows[i] = detail::segment_row(
+                *s, scale, common_scale({s->numerator, s->denominator}, INT_MAX));
+            continue;
         }
         rows[i] = detail::homogeneous<Integer>(
             *g[i],
@@ -144,7 +145,8 @@ std::array<Homogeneous<Integer>, N> exact_rows(const std::array<const GenericPoi
                 return std::array<Integer, 3>{
                     scaled(p.x, scale), scaled(p.y, scale), scaled(p.z, scale)};
             },
-            [&](double x) { return scaled(x, parameter_scale); });
+            // Only a SegmentParameterPoint has a parameter, and it was made above.
+            [](double x) { return scaled(x, 0); });
     }
     return rows;
 }

@@ -1,9 +1,13 @@
 #include "homogeneous_exact.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <tuple>
 
 #include <gmp.h>
+
+#include "cavity/predicates/dyadic.h"
 
 namespace cavity::predicates::detail {
 
@@ -88,7 +92,41 @@ int determinant_sign(const Entries<N>& m, mp_bitcnt_t entry_bits) {
     return mpz_sgn(minor[kMasks - 1]);
 }
 
+/// out = factor * x * 2^-scale, for scale <= spacing_exponent(x): one product by x's mantissa
+/// and one shift, in place.
+void set_scaled_product(mpz_ptr out, mpz_srcptr factor, double x, int scale) {
+    if (x == 0.0) {
+        mpz_set_ui(out, 0);
+        return;
+    }
+    const int k = spacing_exponent(x);
+    mpz_mul_si(out, factor, static_cast<long>(std::ldexp(x, -k)));  // |mantissa| < 2^53
+    mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(k - scale));
+}
+
 }  // namespace
+
+// X = den a + num (b - a) = (den - num) a + num b: two products of an integer by a scaled
+// double each, where homogeneous<ExactInteger> made integers of a, b, b - a and both products
+// first.
+Homogeneous<ExactInteger> segment_row(const SegmentParameterPoint& s,
+                                      int scale,
+                                      int parameter_scale) {
+    Homogeneous<ExactInteger> h;
+    h.w = scaled_to_integer<ExactInteger>(s.denominator, parameter_scale);
+    const ExactInteger num = scaled_to_integer<ExactInteger>(s.numerator, parameter_scale);
+    ExactInteger rest;
+    mpz_sub(rest.backend().data(), h.w.backend().data(), num.backend().data());
+    ExactInteger term;
+    for (const auto& [out, a, b] : {std::tuple{&h.x, s.a.x, s.b.x},
+                                    std::tuple{&h.y, s.a.y, s.b.y},
+                                    std::tuple{&h.z, s.a.z, s.b.z}}) {
+        set_scaled_product(out->backend().data(), rest.backend().data(), a, scale);
+        set_scaled_product(term.backend().data(), num.backend().data(), b, scale);
+        mpz_add(out->backend().data(), out->backend().data(), term.backend().data());
+    }
+    return h;
+}
 
 int homogeneous_orient3d_sign(const std::array<Homogeneous<ExactInteger>, 4>& rows) {
     int w_signs = 1;

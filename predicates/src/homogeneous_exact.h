@@ -19,6 +19,13 @@ namespace cavity::predicates::detail {
 using ExactInteger =
     boost::multiprecision::number<boost::multiprecision::gmp_int, boost::multiprecision::et_off>;
 
+/// The homogeneous coordinates of s (homogeneous.h) with every coordinate of a and b scaled by
+/// 2^-scale and the numerator and denominator by 2^-parameter_scale, each an integer then: the
+/// row that homogeneous<ExactInteger> makes of them, without its temporaries.
+Homogeneous<ExactInteger> segment_row(const SegmentParameterPoint& s,
+                                      int scale,
+                                      int parameter_scale);
+
 /// The sign of det[X Y Z W] over the four rows.
 int homogeneous_orient3d_sign(const std::array<Homogeneous<ExactInteger>, 4>& rows);
 

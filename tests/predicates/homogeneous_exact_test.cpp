@@ -1,16 +1,20 @@
-// The in-place exact determinants (predicates/src/homogeneous_exact.h) against the value-semantics
-// expansion of homogeneous.h over the same integers, their oracle: random rows from a few bits to
-// a few thousand (GMP must grow past every size hint), negative and zero W, and exactly singular
-// matrices (a repeated row, a row that is a combination of others, five cospherical points).
+// The in-place exact stage (predicates/src/homogeneous_exact.h) against the value-semantics code
+// of homogeneous.h over the same integers, its oracle: the determinants on random rows from a few
+// bits to a few thousand (GMP must grow past every size hint), negative and zero W, and exactly
+// singular matrices (a repeated row, a row that is a combination of others, five cospherical
+// points); the rows of segment points at extreme exponents, zeros and subnormals included.
 
 #include "homogeneous_exact.h"
 
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
 
+#include "cavity/predicates/dyadic.h"
 #include "homogeneous.h"
 
 namespace cavity::predicates::detail {
@@ -141,6 +145,68 @@ TEST(HomogeneousExact, CosphericalPointsAreZeroAndTheirNeighboursAreNot) {
         std::array<Row, 4> four{five[0], five[2], five[4], five[1]};
         four[2].w = 0;
         EXPECT_EQ(homogeneous_orient3d_sign(four), 0);
+    }
+}
+
+/// A double of random sign and mantissa at 2^exponent, or one of the special values.
+double random_double(std::mt19937_64& random, int low, int high) {
+    switch (random() % 8) {
+        case 0:
+            return 0.0;
+        case 1:
+            return std::numeric_limits<double>::denorm_min() * static_cast<double>(random() % 100);
+        default: {
+            std::uniform_real_distribution<double> mantissa(1.0, 2.0);
+            const int exponent =
+                low + static_cast<int>(random() % static_cast<unsigned>(high - low));
+            const double x = std::ldexp(mantissa(random), exponent);
+            return (random() & 1u) != 0 ? -x : x;
+        }
+    }
+}
+
+int least_spacing(std::initializer_list<double> values) {
+    int scale = std::numeric_limits<int>::max();
+    for (const double v : values) {
+        if (v != 0.0) {
+            scale = std::min(scale, spacing_exponent(v));
+        }
+    }
+    return scale == std::numeric_limits<int>::max() ? 0 : scale;
+}
+
+TEST(HomogeneousExact, SegmentRowsMatchTheValueSemanticsRows) {
+    std::mt19937_64 random(17);
+    for (const auto& [low, high] : {std::pair{-3, 3}, std::pair{-60, 60}, std::pair{-1074, 1000}}) {
+        for (int trial = 0; trial < 500; ++trial) {
+            const SegmentParameterPoint s{
+                {random_double(random, low, high),
+                 random_double(random, low, high),
+                 random_double(random, low, high)},
+                {random_double(random, low, high),
+                 random_double(random, low, high),
+                 random_double(random, low, high)},
+                random_double(random, low, high),
+                trial % 4 == 0 ? std::ldexp(1.0, trial % 40) : random_double(random, low, high)};
+            // Scales at the least spacing of the query, as exact_rows takes them, or below it.
+            const int scale = least_spacing({s.a.x, s.a.y, s.a.z, s.b.x, s.b.y, s.b.z}) -
+                              static_cast<int>(random() % 3);
+            const int parameter_scale =
+                least_spacing({s.numerator, s.denominator}) - static_cast<int>(random() % 3);
+            const Row expected = homogeneous<ExactInteger>(
+                GenericPoint3(s),
+                [&](const Point3& p) {
+                    return std::array<ExactInteger, 3>{scaled_to_integer<ExactInteger>(p.x, scale),
+                                                       scaled_to_integer<ExactInteger>(p.y, scale),
+                                                       scaled_to_integer<ExactInteger>(p.z, scale)};
+                },
+                [&](double x) { return scaled_to_integer<ExactInteger>(x, parameter_scale); });
+            const Row row = segment_row(s, scale, parameter_scale);
+            EXPECT_EQ(row.x, expected.x) << low << " " << trial;
+            EXPECT_EQ(row.y, expected.y) << low << " " << trial;
+            EXPECT_EQ(row.z, expected.z) << low << " " << trial;
+            EXPECT_EQ(row.w, expected.w) << low << " " << trial;
+        }
     }
 }
 
