@@ -10,14 +10,13 @@
 #include <utility>
 #include <variant>
 
-#include <boost/multiprecision/gmp.hpp>
-
 #include "cavity/predicates/dyadic.h"
 #include "cavity/predicates/generic_filter.h"
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/orient3d.h"
 #include "coplanarity_certificate.h"
 #include "homogeneous.h"
+#include "homogeneous_exact.h"
 #include "interval.h"
 
 // Filter, then exact, on the homogeneous coordinates (homogeneous.h).
@@ -45,23 +44,19 @@
 // the W exclude zero. What the filter leaves is mostly
 // exactly coplanar (flat hull faces, the validator's checks); coplanarity_certificate.h proves
 // those zeros from exact orient3d on the defining doubles, some twenty times cheaper than the
-// integers. The exact stage evaluates the same formulas over GMP integers after scaling the
+// integers. The exact stage evaluates the same formulas over GMP integers, in place
+// (homogeneous_exact.h), after scaling the
 // defining doubles to integers (homogeneous.h says why that keeps the signs).
 namespace cavity::predicates {
 
 namespace {
 
-using Integer =
-    boost::multiprecision::number<boost::multiprecision::gmp_int, boost::multiprecision::et_off>;
+using Integer = detail::ExactInteger;
 using detail::Homogeneous;
 using detail::Interval;
 using detail::Matrix;
 
 int sign_of(const Interval& x) {
-    return x.sign();
-}
-
-int sign_of(const Integer& x) {
     return x.sign();
 }
 
@@ -139,9 +134,10 @@ std::array<Homogeneous<Integer>, N> exact_rows(const std::array<const GenericPoi
     }
     std::array<Homogeneous<Integer>, N> rows;
     for (std::size_t i = 0; i < N; ++i) {
-        int parameter_scale = 0;
         if (const auto* s = std::get_if<SegmentParameterPoint>(g[i])) {
-            parameter_scale = common_scale({s->numerator, s->denominator}, INT_MAX);
+            rows[i] = detail::segment_row(
+                *s, scale, common_scale({s->numerator, s->denominator}, INT_MAX));
+            continue;
         }
         rows[i] = detail::homogeneous<Integer>(
             *g[i],
@@ -149,7 +145,8 @@ std::array<Homogeneous<Integer>, N> exact_rows(const std::array<const GenericPoi
                 return std::array<Integer, 3>{
                     scaled(p.x, scale), scaled(p.y, scale), scaled(p.z, scale)};
             },
-            [&](double x) { return scaled(x, parameter_scale); });
+            // Only a SegmentParameterPoint has a parameter, and it was made above.
+            [](double x) { return scaled(x, 0); });
     }
     return rows;
 }
@@ -293,7 +290,7 @@ Verdict orient3d_staged(const GenericPoint3& a,
     if (detail::certified_coplanar(g)) {
         return {Sign::kZero, Stage::kExact};
     }
-    return {static_cast<Sign>(orient3d_sign(exact_rows(g))), Stage::kExact};
+    return {static_cast<Sign>(detail::homogeneous_orient3d_sign(exact_rows(g))), Stage::kExact};
 }
 
 Verdict insphere_staged(const GenericPoint3& a,
@@ -330,7 +327,7 @@ Verdict insphere_staged(const GenericPoint3& a,
     if (detail::certified_coplanar(g)) {
         return {Sign::kZero, Stage::kExact};
     }
-    return {static_cast<Sign>(insphere_sign(exact_rows(g))), Stage::kExact};
+    return {static_cast<Sign>(detail::homogeneous_insphere_sign(exact_rows(g))), Stage::kExact};
 }
 
 double rounding_error(const GenericPoint3& g, const Point3& r) {
