@@ -120,6 +120,18 @@ private:
     /// The sign of offset(p) for an input point p.
     predicates::Sign explicit_side(const Point3& p) const;
 
+    /// explicit_ in integers, for projected_crossing: every coordinate scaled by 2^-scale (the
+    /// least spacing exponent among them), the normal m = (e1 - e0) x (e2 - e0) and m . e0 of the
+    /// scaled corners. Made on the first crossing and kept: a facet asks for many crossings, and
+    /// scaling the corners and forming m was a third of each.
+    struct ExplicitIntegers {
+        int scale = 0;
+        std::array<boost::multiprecision::mpz_int, 3> normal;
+        boost::multiprecision::mpz_int normal_dot_corner;
+    };
+
+    const ExplicitIntegers& explicit_integers() const;
+
     std::array<predicates::GenericPoint3, 3> corners_;  ///< the corners that define the plane
     /// Three non-collinear input corners of the facet, and the sign relating their orientation to
     /// that of corners_ (0: the facet has no such three; side() then asks corners_). The plane is
@@ -127,6 +139,7 @@ private:
     std::array<Point3, 3> explicit_{};
     int explicit_sign_ = 0;
     mutable std::optional<std::pair<ExactPoint, ExactPoint>> rational_;  ///< a and n, or not yet
+    mutable std::optional<ExplicitIntegers> explicit_integers_;          ///< or not yet
     int drop_ = 2;
 };
 
