@@ -726,6 +726,52 @@ std::optional<ExactPoint> ExactPlane::projected_crossing(const predicates::Gener
     return x;
 }
 
+std::optional<ExactPoint> projected_centroid(std::span<const predicates::GenericPoint3> points,
+                                             int drop) {
+    int s = std::numeric_limits<int>::max();
+    for (const auto& g : points) {
+        s = std::min(s, spacing_of(g));
+    }
+    if (s == std::numeric_limits<int>::max()) {
+        s = 0;  // every coordinate zero, or a line-plane point (refused below)
+    }
+    // The sum of the v_i / w_i over a common denominator, scaled by 2^-s: X / W with X = X w_i +
+    // v_i W and W = W w_i at each step, then W times the count.
+    std::array<Integer, 3> sum;
+    Integer denominator;
+    std::array<Integer, 3> v;
+    Integer w;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!homogeneous(points[i], s, v, w)) {
+            return std::nullopt;
+        }
+        if (i == 0) {
+            sum = std::move(v);
+            v = {};
+            denominator = std::move(w);
+            continue;
+        }
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (static_cast<int>(k) != drop) {
+                mpz_mul(raw(sum[k]), raw(sum[k]), raw(w));
+                mpz_addmul(raw(sum[k]), raw(v[k]), raw(denominator));
+            }
+        }
+        mpz_mul(raw(denominator), raw(denominator), raw(w));
+    }
+    if (points.empty()) {
+        return std::nullopt;
+    }
+    mpz_mul_ui(raw(denominator), raw(denominator), static_cast<unsigned long>(points.size()));
+    ExactPoint x;
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (static_cast<int>(k) != drop) {
+            x[k] = dyadic_quotient(std::move(sum[k]), denominator, s);
+        }
+    }
+    return x;
+}
+
 FacetRegion::FacetRegion(const Plc& plc,
                          const PlcFacet& facet,
                          const ExactPlane& plane,

@@ -143,6 +143,14 @@ private:
     int drop_ = 2;
 };
 
+/// The centroid of input points and points on segments, its coordinate along `drop` left zero
+/// (as ExactPlane::projected_crossing's, for FacetRegion::contains), computed in integers with
+/// one reduction per coordinate; nullopt when the span is empty or holds a line-plane point or a
+/// segment point with parameter 0 / 0. Summing rational points reduced after every addition,
+/// and converting each point to rationals cost several times more.
+std::optional<ExactPoint> projected_centroid(std::span<const predicates::GenericPoint3> points,
+                                             int drop);
+
 /// A point of a facet's plane, projected one-to-one by dropping one coordinate, with its
 /// coordinates rounded to doubles (each within one unit in the last place) and doubles
 /// v_lo <= v <= v_hi: the point-in-loop test compares v against every side's ends and takes
