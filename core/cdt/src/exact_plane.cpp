@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "cavity/predicates/detail/expansion.h"
 #include "cavity/predicates/dyadic.h"
 #include "cavity/predicates/generic_predicates.h"
 #include "cavity/predicates/orient3d.h"
@@ -328,10 +329,55 @@ predicates::Sign opposite(predicates::Sign s) {
                                          : predicates::Sign::kZero;
 }
 
-/// The sign of component k of (b - a) x (c - a), exactly: the orientation of a, b, c projected
-/// onto the coordinate plane normal to axis k, as orient3d of the projections (in the plane
-/// z = 0) and a point above them, which is exact for every finite double.
-predicates::Sign normal_sign(const Point3& a, const Point3& b, const Point3& c, int k) {
+/// The sign of u_i v_j - u_j v_i for the differences u = b - a, v = c - a, i = (k + 1) % 3 and
+/// j = (k + 2) % 3 (component k of u x v), from doubles alone when the four differences are
+/// exact (two_diff leaves no error) and each is zero or within [2^-400, 2^400]; nullopt
+/// otherwise. Then both products are p + e exactly (Dekker's product, no underflow or overflow
+/// in that range), with p = fl(product): rounding is monotone, so unequal p order the products,
+/// and equal p leave the sign of e1 - e2, a difference of doubles whose sign rounding keeps.
+/// The facets' corners are mostly on a grid where these differences are exact, and collinear
+/// triples (a zero sign) were an exact-stage orient3d each, most of a facet's plane.
+std::optional<int> cross_sign_in_doubles(const Point3& a, const Point3& b, const Point3& c, int k) {
+    const std::array<double, 3> pa{a.x, a.y, a.z};
+    const std::array<double, 3> pb{b.x, b.y, b.z};
+    const std::array<double, 3> pc{c.x, c.y, c.z};
+    const auto i = static_cast<std::size_t>((k + 1) % 3);
+    const auto j = static_cast<std::size_t>((k + 2) % 3);
+    std::array<double, 4> d{};  // u_i, u_j, v_i, v_j
+    const std::array<std::pair<const std::array<double, 3>*, std::size_t>, 4> terms{
+        {{&pb, i}, {&pb, j}, {&pc, i}, {&pc, j}}};
+    for (std::size_t t = 0; t < 4; ++t) {
+        const auto& [p, axis] = terms[t];
+        double error = 0;
+        predicates::detail::two_diff((*p)[axis], pa[axis], d[t], error);
+        const double size = std::abs(d[t]);
+        if (error != 0 || !(size == 0 || (size >= 0x1p-400 && size <= 0x1p+400))) {
+            return std::nullopt;  // also NaN
+        }
+    }
+    double p1 = 0;
+    double e1 = 0;
+    double p2 = 0;
+    double e2 = 0;
+    predicates::detail::two_product(d[0], d[3], p1, e1);
+    predicates::detail::two_product(d[1], d[2], p2, e2);
+    if (p1 != p2) {
+        return p1 > p2 ? 1 : -1;
+    }
+    return e1 > e2 ? 1 : e1 < e2 ? -1 : 0;
+}
+
+}  // namespace
+
+predicates::Sign cross_component_sign(const Point3& a, const Point3& b, const Point3& c, int k) {
+    if (const std::optional<int> s = cross_sign_in_doubles(a, b, c, k)) {
+        return *s > 0   ? predicates::Sign::kPos
+               : *s < 0 ? predicates::Sign::kNeg
+                        : predicates::Sign::kZero;
+    }
+    // The orientation of a, b, c projected onto the coordinate plane normal to axis k, as
+    // orient3d of the projections (in the plane z = 0) and a point above them, which is exact
+    // for every finite double.
     const auto flat = [k](const Point3& p) {
         const std::array<double, 3> x{p.x, p.y, p.z};
         return Point3{x[static_cast<std::size_t>((k + 1) % 3)],
@@ -341,6 +387,8 @@ predicates::Sign normal_sign(const Point3& a, const Point3& b, const Point3& c, 
     // det[a-d; b-d; c-d] with d = (0, 0, 1) is minus the 2D orientation of the projections.
     return opposite(predicates::orient3d(flat(a), flat(b), flat(c), {0.0, 0.0, 1.0}));
 }
+
+namespace {
 
 /// p == q coordinate by coordinate.
 bool same(const Point3& p, const Point3& q) {
@@ -360,12 +408,14 @@ std::optional<int> drop_axis(const Point3& a, const Point3& b, const Point3& c) 
         x = std::isnan(x) ? -1.0 : x;  // an estimate that overflowed into inf - inf goes last
     }
     std::array<int, 3> axes{0, 1, 2};
-    // Largest estimate first; ties keep the lower axis.
-    std::stable_sort(axes.begin(), axes.end(), [&](int i, int j) {
-        return size[static_cast<std::size_t>(i)] > size[static_cast<std::size_t>(j)];
+    // Largest estimate first; ties keep the lower axis (std::stable_sort took a heap buffer).
+    std::sort(axes.begin(), axes.end(), [&](int i, int j) {
+        const double si = size[static_cast<std::size_t>(i)];
+        const double sj = size[static_cast<std::size_t>(j)];
+        return si > sj || (si == sj && i < j);
     });
     for (int k : axes) {
-        if (normal_sign(a, b, c, k) != predicates::Sign::kZero) {
+        if (cross_component_sign(a, b, c, k) != predicates::Sign::kZero) {
             return k;
         }
     }

@@ -80,6 +80,11 @@ inline bool is_zero(const ExactPoint& v) {
     return v[0] == 0 && v[1] == 0 && v[2] == 0;
 }
 
+/// The sign of component k of (b - a) x (c - a), exactly: in doubles when the differences of the
+/// coordinates involved are exact (points on a common grid), else by orient3d of the points
+/// projected along axis k.
+predicates::Sign cross_component_sign(const Point3& a, const Point3& b, const Point3& c, int k);
+
 /// The plane through three non-collinear points a, b, c, with normal n = (b - a) x (c - a).
 class ExactPlane {
 public:

@@ -1338,6 +1338,39 @@ TEST(ExactPlane, IntegerCrossingAtAFinerScaleThanTheCorners) {
     EXPECT_GT(tested, 200);
 }
 
+TEST(ExactPlane, CrossComponentSignIsTheRationalSign) {
+    // Points on grids (differences exact: the doubles decide), collinear triples among them (a
+    // zero component), and points whose differences round (orient3d decides), at scales from
+    // subnormal to huge: every component's sign must be that of the rational cross product.
+    Random random(43);
+    int zeros = 0;
+    for (const double scale : {1.0, 0.1, 0x1p-1060, 0x1p-420, 0x1p+390, 0x1p+900}) {
+        const auto coordinate = [&] {
+            const double grid = scale * (static_cast<double>(random.below(33)) - 16) / 8;
+            return random.below(4) == 0 ? grid + scale * 0x1p-60 : grid;
+        };
+        const auto point = [&] { return Point3{coordinate(), coordinate(), coordinate()}; };
+        for (int trial = 0; trial < 300; ++trial) {
+            const Point3 a = point();
+            const Point3 b = point();
+            Point3 c = point();
+            if (trial % 3 == 0) {
+                // On line ab, when the doubles allow: a + 2 (b - a).
+                c = Point3{a.x + 2 * (b.x - a.x), a.y + 2 * (b.y - a.y), a.z + 2 * (b.z - a.z)};
+            }
+            const ExactPoint n =
+                cross(minus(exact_point(b), exact_point(a)), minus(exact_point(c), exact_point(a)));
+            for (int k = 0; k < 3; ++k) {
+                const int expected = n[static_cast<std::size_t>(k)].sign();
+                zeros += expected == 0 ? 1 : 0;
+                EXPECT_EQ(predicates::to_int(cross_component_sign(a, b, c, k)), expected)
+                    << "scale " << scale << " trial " << trial << " axis " << k;
+            }
+        }
+    }
+    EXPECT_GT(zeros, 500);
+}
+
 TEST(ExactPlane, IntegerCentroidIsTheRationalCentroid) {
     // One to three input points and points on segments, at scales from subnormal to huge and
     // mixed: projected_centroid must equal the mean of the rational points on every kept
