@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "cavity/predicates/detail/expansion.h"
 #include "cavity/predicates/dyadic.h"
 #include "cavity/predicates/generic_predicates.h"
 #include "cavity/predicates/orient3d.h"
@@ -328,10 +329,55 @@ predicates::Sign opposite(predicates::Sign s) {
                                          : predicates::Sign::kZero;
 }
 
-/// The sign of component k of (b - a) x (c - a), exactly: the orientation of a, b, c projected
-/// onto the coordinate plane normal to axis k, as orient3d of the projections (in the plane
-/// z = 0) and a point above them, which is exact for every finite double.
-predicates::Sign normal_sign(const Point3& a, const Point3& b, const Point3& c, int k) {
+/// The sign of u_i v_j - u_j v_i for the differences u = b - a, v = c - a, i = (k + 1) % 3 and
+/// j = (k + 2) % 3 (component k of u x v), from doubles alone when the four differences are
+/// exact (two_diff leaves no error) and each is zero or within [2^-400, 2^400]; nullopt
+/// otherwise. Then both products are p + e exactly (Dekker's product, no underflow or overflow
+/// in that range), with p = fl(product): rounding is monotone, so unequal p order the products,
+/// and equal p leave the sign of e1 - e2, a difference of doubles whose sign rounding keeps.
+/// The facets' corners are mostly on a grid where these differences are exact, and collinear
+/// triples (a zero sign) were an exact-stage orient3d each, most of a facet's plane.
+std::optional<int> cross_sign_in_doubles(const Point3& a, const Point3& b, const Point3& c, int k) {
+    const std::array<double, 3> pa{a.x, a.y, a.z};
+    const std::array<double, 3> pb{b.x, b.y, b.z};
+    const std::array<double, 3> pc{c.x, c.y, c.z};
+    const auto i = static_cast<std::size_t>((k + 1) % 3);
+    const auto j = static_cast<std::size_t>((k + 2) % 3);
+    std::array<double, 4> d{};  // u_i, u_j, v_i, v_j
+    const std::array<std::pair<const std::array<double, 3>*, std::size_t>, 4> terms{
+        {{&pb, i}, {&pb, j}, {&pc, i}, {&pc, j}}};
+    for (std::size_t t = 0; t < 4; ++t) {
+        const auto& [p, axis] = terms[t];
+        double error = 0;
+        predicates::detail::two_diff((*p)[axis], pa[axis], d[t], error);
+        const double size = std::abs(d[t]);
+        if (error != 0 || !(size == 0 || (size >= 0x1p-400 && size <= 0x1p+400))) {
+            return std::nullopt;  // also NaN
+        }
+    }
+    double p1 = 0;
+    double e1 = 0;
+    double p2 = 0;
+    double e2 = 0;
+    predicates::detail::two_product(d[0], d[3], p1, e1);
+    predicates::detail::two_product(d[1], d[2], p2, e2);
+    if (p1 != p2) {
+        return p1 > p2 ? 1 : -1;
+    }
+    return e1 > e2 ? 1 : e1 < e2 ? -1 : 0;
+}
+
+}  // namespace
+
+predicates::Sign cross_component_sign(const Point3& a, const Point3& b, const Point3& c, int k) {
+    if (const std::optional<int> s = cross_sign_in_doubles(a, b, c, k)) {
+        return *s > 0   ? predicates::Sign::kPos
+               : *s < 0 ? predicates::Sign::kNeg
+                        : predicates::Sign::kZero;
+    }
+    // The orientation of a, b, c projected onto the coordinate plane normal to axis k, as
+    // orient3d of the projections (in the plane z = 0) and a point above them, which is exact
+    // for every finite double.
     const auto flat = [k](const Point3& p) {
         const std::array<double, 3> x{p.x, p.y, p.z};
         return Point3{x[static_cast<std::size_t>((k + 1) % 3)],
@@ -341,6 +387,8 @@ predicates::Sign normal_sign(const Point3& a, const Point3& b, const Point3& c, 
     // det[a-d; b-d; c-d] with d = (0, 0, 1) is minus the 2D orientation of the projections.
     return opposite(predicates::orient3d(flat(a), flat(b), flat(c), {0.0, 0.0, 1.0}));
 }
+
+namespace {
 
 /// p == q coordinate by coordinate.
 bool same(const Point3& p, const Point3& q) {
@@ -360,12 +408,14 @@ std::optional<int> drop_axis(const Point3& a, const Point3& b, const Point3& c) 
         x = std::isnan(x) ? -1.0 : x;  // an estimate that overflowed into inf - inf goes last
     }
     std::array<int, 3> axes{0, 1, 2};
-    // Largest estimate first; ties keep the lower axis.
-    std::stable_sort(axes.begin(), axes.end(), [&](int i, int j) {
-        return size[static_cast<std::size_t>(i)] > size[static_cast<std::size_t>(j)];
+    // Largest estimate first; ties keep the lower axis (std::stable_sort took a heap buffer).
+    std::sort(axes.begin(), axes.end(), [&](int i, int j) {
+        const double si = size[static_cast<std::size_t>(i)];
+        const double sj = size[static_cast<std::size_t>(j)];
+        return si > sj || (si == sj && i < j);
     });
     for (int k : axes) {
-        if (normal_sign(a, b, c, k) != predicates::Sign::kZero) {
+        if (cross_component_sign(a, b, c, k) != predicates::Sign::kZero) {
             return k;
         }
     }
@@ -599,31 +649,44 @@ ExactPoint ExactPlane::crossing(const ExactPoint& ep, const ExactPoint& eq) cons
 
 namespace {
 
+/// GMP's own view of an integer: the sums of products below run in place (mpz_addmul), where
+/// Boost's expressions made and freed a temporary integer per operation.
+mpz_ptr raw(Integer& x) {
+    return x.backend().data();
+}
+
+mpz_srcptr raw(const Integer& x) {
+    return x.backend().data();
+}
+
 /// A point as integers v / w scaled by 2^-s (v a vector, w != 0): an input point with w = 1, or
-/// a point a + (n / d)(b - a) on a segment, with n and d scaled by their own power; nullopt for
-/// a line-plane point, or a parameter 0 / 0.
-std::optional<std::pair<std::array<Integer, 3>, Integer>> homogeneous(
-    const predicates::GenericPoint3& g, int s) {
+/// a point a + (n / d)(b - a) on a segment, with n and d scaled by their own power; false (v and
+/// w unset) for a line-plane point, or a parameter 0 / 0.
+bool homogeneous(const predicates::GenericPoint3& g, int s, std::array<Integer, 3>& v, Integer& w) {
     if (const auto* p = std::get_if<Point3>(&g)) {
-        return std::pair{scaled(*p, s), Integer(1)};
+        v = scaled(*p, s);
+        w = 1;
+        return true;
     }
     const auto* sp = std::get_if<predicates::SegmentParameterPoint>(&g);
     if (sp == nullptr) {
-        return std::nullopt;
+        return false;
     }
     const int r = common_spacing(std::array<double, 2>{sp->numerator, sp->denominator});
     if (r == std::numeric_limits<int>::max()) {
-        return std::nullopt;
+        return false;
     }
     const std::array<Integer, 3> a = scaled(sp->a, s);
-    const std::array<Integer, 3> b = scaled(sp->b, s);
+    std::array<Integer, 3> b = scaled(sp->b, s);
     const Integer n = scaled(sp->numerator, r);
-    Integer d = scaled(sp->denominator, r);
-    std::array<Integer, 3> v;
+    w = scaled(sp->denominator, r);
     for (std::size_t k = 0; k < 3; ++k) {
-        v[k] = a[k] * d + n * (b[k] - a[k]);
+        // v = a d + n (b - a), with b - a formed in b's place.
+        mpz_sub(raw(b[k]), raw(b[k]), raw(a[k]));
+        mpz_mul(raw(v[k]), raw(a[k]), raw(w));
+        mpz_addmul(raw(v[k]), raw(n), raw(b[k]));
     }
-    return std::pair{std::move(v), std::move(d)};
+    return true;
 }
 
 /// The least spacing exponent of the doubles that define g (see common_spacing).
@@ -640,48 +703,120 @@ int spacing_of(const predicates::GenericPoint3& g) {
 
 }  // namespace
 
+const ExactPlane::ExplicitIntegers& ExactPlane::explicit_integers() const {
+    if (!explicit_integers_) {
+        const auto& e = explicit_;
+        ExplicitIntegers made;
+        // Three non-collinear corners are not all the origin, so the scale is finite.
+        made.scale = std::min({spacing_of(e[0]), spacing_of(e[1]), spacing_of(e[2])});
+        const std::array<Integer, 3> a = scaled(e[0], made.scale);
+        const std::array<Integer, 3> b = scaled(e[1], made.scale);
+        const std::array<Integer, 3> c = scaled(e[2], made.scale);
+        const std::array<Integer, 3> u{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const std::array<Integer, 3> v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        made.normal = {Integer(u[1] * v[2] - u[2] * v[1]),
+                       Integer(u[2] * v[0] - u[0] * v[2]),
+                       Integer(u[0] * v[1] - u[1] * v[0])};
+        made.normal_dot_corner =
+            made.normal[0] * a[0] + made.normal[1] * a[1] + made.normal[2] * a[2];
+        explicit_integers_.emplace(std::move(made));
+    }
+    return *explicit_integers_;
+}
+
 std::optional<ExactPoint> ExactPlane::projected_crossing(const predicates::GenericPoint3& p,
                                                          const predicates::GenericPoint3& q) const {
     if (explicit_sign_ == 0 || std::holds_alternative<predicates::LinePlanePoint>(p) ||
         std::holds_alternative<predicates::LinePlanePoint>(q)) {
         return std::nullopt;
     }
-    const auto& e = explicit_;
-    int s = std::min(
-        {spacing_of(e[0]), spacing_of(e[1]), spacing_of(e[2]), spacing_of(p), spacing_of(q)});
-    if (s == std::numeric_limits<int>::max()) {
-        s = 0;  // every coordinate zero
-    }
-    auto hp = homogeneous(p, s);
-    auto hq = homogeneous(q, s);
-    if (!hp || !hq) {
+    const ExplicitIntegers& e = explicit_integers();
+    const int s = std::min({e.scale, spacing_of(p), spacing_of(q)});
+    std::array<Integer, 3> pv;
+    std::array<Integer, 3> qv;
+    Integer pw;
+    Integer qw;
+    if (!homogeneous(p, s, pv, pw) || !homogeneous(q, s, qv, qw)) {
         return std::nullopt;
     }
-    const auto& [pv, pw] = *hp;
-    const auto& [qv, qw] = *hq;
     // Scaled by 2^-s every coordinate is an integer, and D(x) = (e1 - e0) x (e2 - e0) . (x - e0)
     // is a constant multiple of offset(x) (the same plane). For x = v / w, D(x) = h / w with h =
     // m . (v - e0 w), and the crossing (D(p) q - D(q) p) / (D(p) - D(q)) is
     // (h_p q_v - h_q p_v) / (h_p q_w - h_q p_w): the same point as crossing()'s, without a
-    // rational normal, offset or reduction per operation.
-    const std::array<Integer, 3> a = scaled(e[0], s);
-    const std::array<Integer, 3> b = scaled(e[1], s);
-    const std::array<Integer, 3> c = scaled(e[2], s);
-    const std::array<Integer, 3> u{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    const std::array<Integer, 3> v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const std::array<Integer, 3> m{
-        u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-    const Integer ma = m[0] * a[0] + m[1] * a[1] + m[2] * a[2];
-    const auto height = [&](const std::array<Integer, 3>& x, const Integer& w) {
-        return Integer(m[0] * x[0] + m[1] * x[1] + m[2] * x[2] - ma * w);
+    // rational normal, offset or reduction per operation. The corners scaled by 2^-s are those
+    // scaled by 2^-e.scale times 2^k, k = e.scale - s >= 0, so m and m . e0 at scale s are the
+    // kept ones times 2^2k and 2^3k: h is 2^2k (m . v - (m . e0) w 2^k) with the kept m, and
+    // the common factor 2^2k of both h cancels from the crossing.
+    const auto shift = static_cast<mp_bitcnt_t>(e.scale - s);
+    Integer term;
+    const auto height = [&](const std::array<Integer, 3>& x, const Integer& w, Integer& h) {
+        mpz_mul(raw(h), raw(e.normal[0]), raw(x[0]));
+        mpz_addmul(raw(h), raw(e.normal[1]), raw(x[1]));
+        mpz_addmul(raw(h), raw(e.normal[2]), raw(x[2]));
+        mpz_mul(raw(term), raw(e.normal_dot_corner), raw(w));
+        mpz_mul_2exp(raw(term), raw(term), shift);
+        mpz_sub(raw(h), raw(h), raw(term));
     };
-    const Integer h_p = height(pv, pw);
-    const Integer h_q = height(qv, qw);
-    const Integer w = h_p * qw - h_q * pw;
+    Integer h_p;
+    Integer h_q;
+    height(pv, pw, h_p);
+    height(qv, qw, h_q);
+    Integer w;
+    mpz_mul(raw(w), raw(h_p), raw(qw));
+    mpz_submul(raw(w), raw(h_q), raw(pw));
     ExactPoint x;
     for (std::size_t k = 0; k < 3; ++k) {
         if (static_cast<int>(k) != drop_) {
-            x[k] = dyadic_quotient(Integer(h_p * qv[k] - h_q * pv[k]), w, s);
+            Integer numerator;
+            mpz_mul(raw(numerator), raw(h_p), raw(qv[k]));
+            mpz_submul(raw(numerator), raw(h_q), raw(pv[k]));
+            x[k] = dyadic_quotient(std::move(numerator), w, s);
+        }
+    }
+    return x;
+}
+
+std::optional<ExactPoint> projected_centroid(std::span<const predicates::GenericPoint3> points,
+                                             int drop) {
+    int s = std::numeric_limits<int>::max();
+    for (const auto& g : points) {
+        s = std::min(s, spacing_of(g));
+    }
+    if (s == std::numeric_limits<int>::max()) {
+        s = 0;  // every coordinate zero, or a line-plane point (refused below)
+    }
+    // The sum of the v_i / w_i over a common denominator, scaled by 2^-s: X / W with X = X w_i +
+    // v_i W and W = W w_i at each step, then W times the count.
+    std::array<Integer, 3> sum;
+    Integer denominator;
+    std::array<Integer, 3> v;
+    Integer w;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!homogeneous(points[i], s, v, w)) {
+            return std::nullopt;
+        }
+        if (i == 0) {
+            sum = std::move(v);
+            v = {};
+            denominator = std::move(w);
+            continue;
+        }
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (static_cast<int>(k) != drop) {
+                mpz_mul(raw(sum[k]), raw(sum[k]), raw(w));
+                mpz_addmul(raw(sum[k]), raw(v[k]), raw(denominator));
+            }
+        }
+        mpz_mul(raw(denominator), raw(denominator), raw(w));
+    }
+    if (points.empty()) {
+        return std::nullopt;
+    }
+    mpz_mul_ui(raw(denominator), raw(denominator), static_cast<unsigned long>(points.size()));
+    ExactPoint x;
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (static_cast<int>(k) != drop) {
+            x[k] = dyadic_quotient(std::move(sum[k]), denominator, s);
         }
     }
     return x;

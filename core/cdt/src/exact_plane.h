@@ -80,6 +80,11 @@ inline bool is_zero(const ExactPoint& v) {
     return v[0] == 0 && v[1] == 0 && v[2] == 0;
 }
 
+/// The sign of component k of (b - a) x (c - a), exactly: in doubles when the differences of the
+/// coordinates involved are exact (points on a common grid), else by orient3d of the points
+/// projected along axis k.
+predicates::Sign cross_component_sign(const Point3& a, const Point3& b, const Point3& c, int k);
+
 /// The plane through three non-collinear points a, b, c, with normal n = (b - a) x (c - a).
 class ExactPlane {
 public:
@@ -120,6 +125,18 @@ private:
     /// The sign of offset(p) for an input point p.
     predicates::Sign explicit_side(const Point3& p) const;
 
+    /// explicit_ in integers, for projected_crossing: every coordinate scaled by 2^-scale (the
+    /// least spacing exponent among them), the normal m = (e1 - e0) x (e2 - e0) and m . e0 of the
+    /// scaled corners. Made on the first crossing and kept: a facet asks for many crossings, and
+    /// scaling the corners and forming m was a third of each.
+    struct ExplicitIntegers {
+        int scale = 0;
+        std::array<boost::multiprecision::mpz_int, 3> normal;
+        boost::multiprecision::mpz_int normal_dot_corner;
+    };
+
+    const ExplicitIntegers& explicit_integers() const;
+
     std::array<predicates::GenericPoint3, 3> corners_;  ///< the corners that define the plane
     /// Three non-collinear input corners of the facet, and the sign relating their orientation to
     /// that of corners_ (0: the facet has no such three; side() then asks corners_). The plane is
@@ -127,8 +144,17 @@ private:
     std::array<Point3, 3> explicit_{};
     int explicit_sign_ = 0;
     mutable std::optional<std::pair<ExactPoint, ExactPoint>> rational_;  ///< a and n, or not yet
+    mutable std::optional<ExplicitIntegers> explicit_integers_;          ///< or not yet
     int drop_ = 2;
 };
+
+/// The centroid of input points and points on segments, its coordinate along `drop` left zero
+/// (as ExactPlane::projected_crossing's, for FacetRegion::contains), computed in integers with
+/// one reduction per coordinate; nullopt when the span is empty or holds a line-plane point or a
+/// segment point with parameter 0 / 0. Summing rational points reduced after every addition,
+/// and converting each point to rationals cost several times more.
+std::optional<ExactPoint> projected_centroid(std::span<const predicates::GenericPoint3> points,
+                                             int drop);
 
 /// A point of a facet's plane, projected one-to-one by dropping one coordinate, with its
 /// coordinates rounded to doubles (each within one unit in the last place) and doubles

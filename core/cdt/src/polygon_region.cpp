@@ -344,6 +344,15 @@ bool FacetGeometry::face_in_region_tested(std::span<const VertexId> on) {
         }
     }
     // Only the coordinates the region's projection keeps (FacetRegion::contains).
+    std::array<predicates::GenericPoint3, 3> points;
+    for (std::size_t i = 0; i < on.size(); ++i) {
+        points[i] = geometry_.generic(on[i]);
+    }
+    if (const auto centroid =
+            projected_centroid(std::span(points.data(), on.size()), plane_.dropped_axis())) {
+        return region_.contains(*centroid);
+    }
+    // A line-plane point (or a parameter 0 / 0): the vertices' rational coordinates, kept.
     const auto drop = static_cast<std::size_t>(plane_.dropped_axis());
     ExactPoint centroid{0, 0, 0};
     for (VertexId v : on) {

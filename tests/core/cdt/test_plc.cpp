@@ -1289,5 +1289,135 @@ TEST(ExactPlane, IntegerCrossingIsTheRationalCrossing) {
     EXPECT_GT(tested, 500);
 }
 
+TEST(ExactPlane, IntegerCrossingAtAFinerScaleThanTheCorners) {
+    // The plane keeps its corners and normal in integers at the corners' own scale; segments whose
+    // ends have finer doubles (offsets down to 2^-48, exact in the sums) ask for a finer scale.
+    Random random(37);
+    int tested = 0;
+    const auto coordinate = [&](double unit) {
+        return unit * (static_cast<double>(random.below(33)) - 16) / 8;
+    };
+    for (int plane_trial = 0; plane_trial < 40; ++plane_trial) {
+        Plc plc;
+        for (int i = 0; i < 3; ++i) {
+            plc.points.points.push_back(Point3{coordinate(4), coordinate(4), coordinate(4)});
+        }
+        PlcFacet facet;
+        facet.loops = {{0, 1, 2}};
+        plc.facets = {facet};
+        const auto plane = ExactPlane::of_facet(plc, plc.facets[0]);
+        if (!plane) {
+            continue;
+        }
+        for (int trial = 0; trial < 40; ++trial) {
+            const double fine = trial % 2 == 0 ? 0x1p-30 : 0x1p-45;
+            const auto point = [&] {
+                return Point3{coordinate(4) + coordinate(fine),
+                              coordinate(4) + coordinate(fine),
+                              coordinate(4) + coordinate(fine)};
+            };
+            const predicates::GenericPoint3 p = point();
+            const predicates::GenericPoint3 q =
+                predicates::SegmentParameterPoint{point(), point(), 0x1p-20 * 3, 1};
+            const auto sp = plane->side(p);
+            const auto sq = plane->side(q);
+            if (sp == predicates::Sign::kZero || sq == predicates::Sign::kZero || sp == sq) {
+                continue;
+            }
+            const auto fast = plane->projected_crossing(p, q);
+            ASSERT_TRUE(fast.has_value());
+            const ExactPoint slow = plane->crossing(exact_point(p), exact_point(q));
+            for (std::size_t k = 0; k < 3; ++k) {
+                if (static_cast<int>(k) != plane->dropped_axis()) {
+                    EXPECT_EQ((*fast)[k], slow[k]) << "plane " << plane_trial << " trial " << trial;
+                }
+            }
+            ++tested;
+        }
+    }
+    EXPECT_GT(tested, 200);
+}
+
+TEST(ExactPlane, CrossComponentSignIsTheRationalSign) {
+    // Points on grids (differences exact: the doubles decide), collinear triples among them (a
+    // zero component), and points whose differences round (orient3d decides), at scales from
+    // subnormal to huge: every component's sign must be that of the rational cross product.
+    Random random(43);
+    int zeros = 0;
+    for (const double scale : {1.0, 0.1, 0x1p-1060, 0x1p-420, 0x1p+390, 0x1p+900}) {
+        const auto coordinate = [&] {
+            const double grid = scale * (static_cast<double>(random.below(33)) - 16) / 8;
+            return random.below(4) == 0 ? grid + scale * 0x1p-60 : grid;
+        };
+        const auto point = [&] { return Point3{coordinate(), coordinate(), coordinate()}; };
+        for (int trial = 0; trial < 300; ++trial) {
+            const Point3 a = point();
+            const Point3 b = point();
+            Point3 c = point();
+            if (trial % 3 == 0) {
+                // On line ab, when the doubles allow: a + 2 (b - a).
+                c = Point3{a.x + 2 * (b.x - a.x), a.y + 2 * (b.y - a.y), a.z + 2 * (b.z - a.z)};
+            }
+            const ExactPoint n =
+                cross(minus(exact_point(b), exact_point(a)), minus(exact_point(c), exact_point(a)));
+            for (int k = 0; k < 3; ++k) {
+                const int expected = n[static_cast<std::size_t>(k)].sign();
+                zeros += expected == 0 ? 1 : 0;
+                EXPECT_EQ(predicates::to_int(cross_component_sign(a, b, c, k)), expected)
+                    << "scale " << scale << " trial " << trial << " axis " << k;
+            }
+        }
+    }
+    EXPECT_GT(zeros, 500);
+}
+
+TEST(ExactPlane, IntegerCentroidIsTheRationalCentroid) {
+    // One to three input points and points on segments, at scales from subnormal to huge and
+    // mixed: projected_centroid must equal the mean of the rational points on every kept
+    // coordinate, and refuse a line-plane point.
+    using predicates::SegmentParameterPoint;
+    Random random(41);
+    const std::array<std::array<double, 2>, 4> parameters{{{1, 3}, {-1, -4}, {0x1p-30, 1}, {5, 7}}};
+    int tested = 0;
+    for (const double scale : {1.0, 3.0e-7, 0x1p-1060, 0x1p+900}) {
+        const auto point = [&] {
+            const double unit = random.below(2) == 0 ? scale : scale * 0x1p-20;
+            const auto c = [&] { return unit * (static_cast<double>(random.below(33)) - 16) / 8; };
+            return Point3{c(), c(), c()};
+        };
+        for (int trial = 0; trial < 200; ++trial) {
+            std::vector<predicates::GenericPoint3> points;
+            const std::size_t count = 1 + random.below(3);
+            for (std::size_t i = 0; i < count; ++i) {
+                if (random.below(2) == 0) {
+                    points.emplace_back(point());
+                } else {
+                    const auto& t = parameters[random.below(parameters.size())];
+                    points.emplace_back(SegmentParameterPoint{point(), point(), t[0], t[1]});
+                }
+            }
+            const int drop = static_cast<int>(random.below(3));
+            const auto fast = projected_centroid(points, drop);
+            ASSERT_TRUE(fast.has_value());
+            for (std::size_t k = 0; k < 3; ++k) {
+                if (static_cast<int>(k) == drop) {
+                    continue;
+                }
+                Rational sum = 0;
+                for (const auto& g : points) {
+                    sum += exact_point(g)[k];
+                }
+                EXPECT_EQ((*fast)[k], sum / static_cast<int>(count)) << "trial " << trial;
+            }
+            ++tested;
+        }
+    }
+    EXPECT_EQ(tested, 800);
+    const predicates::LinePlanePoint crossing{
+        {0, 0, -1}, {0, 0, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    const std::vector<predicates::GenericPoint3> with_line_plane{Point3{1, 2, 3}, crossing};
+    EXPECT_FALSE(projected_centroid(with_line_plane, 2).has_value());
+}
+
 }  // namespace
 }  // namespace cavity::core
