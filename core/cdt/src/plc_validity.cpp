@@ -191,6 +191,12 @@ bool segments_cross(const ExactPoint& a,
 
 std::vector<std::string> edge_violations(const Plc& plc,
                                          std::span<const std::array<std::uint32_t, 2>> edges) {
+    return edge_violations(plc, plc_edges(plc), edges);
+}
+
+std::vector<std::string> edge_violations(const Plc& plc,
+                                         std::span<const std::array<std::uint32_t, 2>> all,
+                                         std::span<const std::array<std::uint32_t, 2>> edges) {
     std::vector<std::string> out;
     const auto base = static_cast<std::uint32_t>(plc.points.index_base);
     const auto& pts = plc.points.points;
@@ -203,7 +209,6 @@ std::vector<std::string> edge_violations(const Plc& plc,
     const auto ids = [&](const Edge& e) {
         return std::to_string(e[0] + base) + "-" + std::to_string(e[1] + base);
     };
-    const std::vector<Edge> all = plc_edges(plc);
     // Candidates come from grids of the points' and the edges' boxes, in index order (the order
     // of the messages): testing each edge against every point and edge was quadratic, and the
     // largest part of edge protection's checks on surface meshes.
@@ -435,8 +440,9 @@ void require_valid_protected_plc(const Plc& plc) {
 }
 
 void require_edges_meet_properly(const Plc& plc,
+                                 std::span<const std::array<std::uint32_t, 2>> all,
                                  std::span<const std::array<std::uint32_t, 2>> edges) {
-    const std::vector<std::string> problems = edge_violations(plc, edges);
+    const std::vector<std::string> problems = edge_violations(plc, all, edges);
     if (!problems.empty()) {
         throw_violations(problems,
                          "the input is not a piecewise linear complex, and splitting cannot "
