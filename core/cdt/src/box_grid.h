@@ -79,7 +79,15 @@ public:
     /// The items registered in the cells of `box` (each once), for the query numbered `query`
     /// (distinct queries need distinct numbers).
     std::vector<std::size_t> near(const Box& box, std::size_t query) {
-        std::vector<std::size_t> out = everywhere_;
+        std::vector<std::size_t> out;
+        near(box, query, out);
+        return out;
+    }
+
+    /// The same into `out`, replacing its contents: a loop of queries reuses one vector (a fresh
+    /// one per query cost as much as reading its cells on surface meshes).
+    void near(const Box& box, std::size_t query, std::vector<std::size_t>& out) {
+        out.assign(everywhere_.begin(), everywhere_.end());
         const auto [lo, hi] = range(box);
         for_cells(lo, hi, [&](std::size_t cell) {
             for (std::size_t e : cells_[cell]) {
@@ -89,7 +97,6 @@ public:
                 }
             }
         });
-        return out;
     }
 
 private:

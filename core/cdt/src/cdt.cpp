@@ -28,9 +28,12 @@ std::string edge_list(const Plc& plc, const std::vector<Edge>& edges) {
 
 /// `dt`, the Delaunay triangulation of the PLC's points, refused when a PLC edge is missing from it
 /// (the flip-based construction needs edge protection) or the PLC is invalid.
-DelaunayTriangulation protected_delaunay(const Plc& plc, DelaunayTriangulation dt) {
+/// `edges` are the PLC's plc_edges.
+DelaunayTriangulation protected_delaunay(const Plc& plc,
+                                         std::span<const Edge> edges,
+                                         DelaunayTriangulation dt) {
     const std::vector<std::array<std::uint32_t, 4>> tets = dt.tets();
-    const std::vector<Edge> missing = unprotected_edges(plc, tets);
+    const std::vector<Edge> missing = unprotected_edges(edges, plc.points.size(), tets);
     if (!missing.empty()) {
         throw Error(located_message(
             plc.source,
@@ -40,7 +43,34 @@ DelaunayTriangulation protected_delaunay(const Plc& plc, DelaunayTriangulation d
                 " (the flip-based CDT needs edge protection; --protect splits them)"));
     }
     // Every edge was just found protected: plc_violations would search for them again.
-    require_valid_protected_plc(plc);
+    // A checked surface (Plc::surface_checked) cannot fail the check, which cost as much as the
+    // Delaunay triangulation on large surface meshes. Its faces F were proven by
+    // require_valid_surface to be non-degenerate simple polygons (tested as their ear triangles)
+    // of a closed manifold surface, each side had by exactly two faces, any two faces meeting
+    // only in the corners and sides they share. Merging unites edge-connected, exactly coplanar
+    // faces into one facet whose loops are the group's boundary (the sides one member has), only
+    // when no corner ends more than two of them: vertex-disjoint simple loops, the outer one
+    // enclosing the others, the region exactly the union of the members. Edge protection only
+    // puts points exactly on edges: every PLC edge e lies within a side E of some face, and every
+    // facet's region and plane are those of its faces. What protected_plc_violations checks:
+    // - collinear corners: every facet contains a face with area;
+    // - crossing loops: vertex-disjoint simple loops never cross;
+    // - a hole point on a loop side: each lies strictly inside its own inner loop (merge checks
+    //   it exactly), a part of the plane no other loop of the connected region enters;
+    // - an edge e crossing facet f, its ends strictly on either side of f's plane: the crossing
+    //   point p is interior to E and lies in some face T of f. The face S that has E meets T at
+    //   p, so p is a shared corner (no corner of a simple polygon is inside its side E) or on a
+    //   shared side D; D and E are sides of S through p interior to E, so D = E, which lies in
+    //   T's plane, and e cannot cross it;
+    // - a side e of a facet g coplanar with f, not a side of f, lying in f's region: E's interior
+    //   meets some face T of f. Inside T or crossing a side of T, E and T meet improperly;
+    //   otherwise E runs along a side of T and is that side, of exactly two faces. When both
+    //   are members of f, E is inside f and e is no PLC edge at all; else E is a side of f, and
+    //   the check skips f's own sides.
+    // A .poly, or any PLC not made by prepare_surface_mesh, is checked as before.
+    if (!plc.surface_checked) {
+        require_valid_protected_plc(plc);
+    }
     return dt;
 }
 
@@ -64,7 +94,9 @@ LiveCdt::LiveCdt(Start start)
     , plc_(std::move(start.plc))
     , geometry_(geometry_by_index(plc_.points)) {
     // The live triangulation's own complex, renamed to the PLC's point indices: no facet matching.
-    storage_ = protected_delaunay(plc_, std::move(start.delaunay)).release_by_index();
+    // The PLC's edges, built once for the protection check and the constraint set.
+    const std::vector<Edge> edges = plc_edges(plc_);
+    storage_ = protected_delaunay(plc_, edges, std::move(start.delaunay)).release_by_index();
     ConstrainedFaces constrained;
     for (std::size_t f = 0; f < plc_.facets.size(); ++f) {
         for (const auto& g :
@@ -72,8 +104,8 @@ LiveCdt::LiveCdt(Start start)
             add_face(g, static_cast<std::uint32_t>(f));
         }
     }
-    for (const auto& e : plc_edges(plc_)) {
-        plc_edges_.insert(e);
+    for (const auto& e : edges) {
+        plc_edges_.insert(plc_edges_.end(), e);  // sorted: each goes in at the end
     }
     validate();
 }

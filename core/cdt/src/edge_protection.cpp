@@ -61,11 +61,16 @@ void split_plc_edge(Plc& plc, const Edge& e, std::uint32_t m) {
 
 std::vector<Edge> unprotected_edges(const Plc& plc,
                                     std::span<const std::array<std::uint32_t, 4>> tets) {
+    return unprotected_edges(plc_edges(plc), plc.points.size(), tets);
+}
+
+std::vector<Edge> unprotected_edges(std::span<const Edge> edges,
+                                    std::size_t points,
+                                    std::span<const std::array<std::uint32_t, 4>> tets) {
     // The PLC edges, sorted, are runs by their lower end; each tetrahedron edge looks in the run
     // of its lower end (a few edges) instead of every tetrahedron edge being sorted (6 per
     // tetrahedron: the largest cost of the CDT's checks on surface meshes).
-    const std::vector<Edge> edges = plc_edges(plc);
-    std::vector<std::uint32_t> run(plc.points.size() + 1, 0);
+    std::vector<std::uint32_t> run(points + 1, 0);
     for (const Edge& e : edges) {
         ++run[e[0] + 1];
     }
@@ -396,13 +401,16 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
     const auto base = static_cast<std::uint32_t>(plc.points.index_base);
     const auto inputs = static_cast<std::uint32_t>(plc.points.size());
     DelaunayTriangulation dt = plc_delaunay(plc);
-    const std::vector<Edge> missing = unprotected_edges(plc, dt.tets());
+    // Built and sorted once: the search for missing edges, the check of those, and the pieces
+    // all start from the input's edges.
+    std::vector<Edge> pieces = plc_edges(plc);
+    const std::vector<Edge> missing = unprotected_edges(pieces, plc.points.size(), dt.tets());
     if (missing.empty()) {
         return {result, std::move(dt)};
     }
     // Splitting never protects an edge that a point lies on or another edge crosses; the pieces
     // of the others inherit the check.
-    require_edges_meet_properly(plc, missing);
+    require_edges_meet_properly(plc, pieces, missing);
     ProtectionMesh mesh(std::move(dt));
     std::unordered_map<std::uint64_t, std::uint32_t> split_at;
     std::vector<Edge> segment_of;  ///< by split point (index - inputs): the input edge it is on
@@ -420,7 +428,6 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
     // triangulation after the previous pass began (in that pass, or when it was popped later):
     // only an insertion since then whose point neighbours both its ends can have removed it, and
     // the others need no star search (homer: 291223 searches, most of them in these passes).
-    std::vector<Edge> pieces = plc_edges(plc);
     // The stars of a piece's ends, their vectors kept across iterations: growing fresh ones was
     // three quarters of the cost of the searches themselves.
     std::vector<TetId> star_p;

@@ -191,6 +191,12 @@ bool segments_cross(const ExactPoint& a,
 
 std::vector<std::string> edge_violations(const Plc& plc,
                                          std::span<const std::array<std::uint32_t, 2>> edges) {
+    return edge_violations(plc, plc_edges(plc), edges);
+}
+
+std::vector<std::string> edge_violations(const Plc& plc,
+                                         std::span<const std::array<std::uint32_t, 2>> all,
+                                         std::span<const std::array<std::uint32_t, 2>> edges) {
     std::vector<std::string> out;
     const auto base = static_cast<std::uint32_t>(plc.points.index_base);
     const auto& pts = plc.points.points;
@@ -203,7 +209,6 @@ std::vector<std::string> edge_violations(const Plc& plc,
     const auto ids = [&](const Edge& e) {
         return std::to_string(e[0] + base) + "-" + std::to_string(e[1] + base);
     };
-    const std::vector<Edge> all = plc_edges(plc);
     // Candidates come from grids of the points' and the edges' boxes, in index order (the order
     // of the messages): testing each edge against every point and edge was quadratic, and the
     // largest part of edge protection's checks on surface meshes.
@@ -236,6 +241,8 @@ std::vector<std::string> edge_violations(const Plc& plc,
             return predicates::orient3d(a, b, p, x) != Sign::kZero;
         });
     };
+    std::vector<std::size_t> near_points;
+    std::vector<std::size_t> near_edges;
     for (std::size_t k = 0; k < edges.size(); ++k) {
         const Edge& e = edges[k];
         const Box box = box_of(e[0], e[1]);
@@ -243,7 +250,7 @@ std::vector<std::string> edge_violations(const Plc& plc,
         const GenericPoint3 gb = generic_point(plc.points, e[1]);
         const ExactPoint a = exact_point(plc.points, e[0]);
         const ExactPoint b = exact_point(plc.points, e[1]);
-        std::vector<std::size_t> near_points = point_grid.near(box, k);
+        point_grid.near(box, k, near_points);
         std::sort(near_points.begin(), near_points.end());
         for (const std::size_t i : near_points) {
             const auto v = static_cast<std::uint32_t>(i);
@@ -255,7 +262,7 @@ std::vector<std::string> edge_violations(const Plc& plc,
                     "point " + std::to_string(v + base) + " lies inside edge " + ids(e)));
             }
         }
-        std::vector<std::size_t> near_edges = edge_grid.near(box, k);
+        edge_grid.near(box, k, near_edges);
         std::sort(near_edges.begin(), near_edges.end());
         for (const std::size_t i : near_edges) {
             const Edge& f = all[i];
@@ -314,6 +321,7 @@ std::vector<std::string> protected_plc_violations(const Plc& plc) {
     RationalPoints rational(plc.points);
     // By point: the facet (index + 1) whose plane its side was last found for, and the side.
     std::vector<std::pair<std::uint32_t, int>> side_of(plc.points.size(), {0, 0});
+    std::vector<std::size_t> near;
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
         const PlcFacet& facet = plc.facets[f];
         FacetReport report(plc, f, out);
@@ -350,7 +358,7 @@ std::vector<std::string> protected_plc_violations(const Plc& plc) {
         // Whether a facet is coplanar with this one, by facet, asked once: a facet split by edge
         // protection has each piece of a side in this plane ask again.
         std::map<std::size_t, bool> coplanar_owner;
-        std::vector<std::size_t> near = grid.near(box, f);
+        grid.near(box, f, near);
         std::sort(near.begin(), near.end());
         for (std::size_t i : near) {
             const OwnedEdge& e = edges[i];
@@ -435,8 +443,9 @@ void require_valid_protected_plc(const Plc& plc) {
 }
 
 void require_edges_meet_properly(const Plc& plc,
+                                 std::span<const std::array<std::uint32_t, 2>> all,
                                  std::span<const std::array<std::uint32_t, 2>> edges) {
-    const std::vector<std::string> problems = edge_violations(plc, edges);
+    const std::vector<std::string> problems = edge_violations(plc, all, edges);
     if (!problems.empty()) {
         throw_violations(problems,
                          "the input is not a piecewise linear complex, and splitting cannot "

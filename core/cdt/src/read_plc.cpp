@@ -1,5 +1,7 @@
 #include "cavity/core/cdt/read_plc.h"
 
+#include <algorithm>
+
 #include "cavity/core/cdt/read_poly.h"
 #include "cavity/core/cdt/surface_validity.h"
 #include "cavity/core/io/surface_mesh.h"
@@ -8,8 +10,24 @@
 
 namespace cavity::core {
 
+namespace {
+
+/// The faces of a surface mesh as its readers make them: one loop each, no hole points, and no
+/// segments (which require_valid_surface does not look at). Only such a PLC is marked
+/// Plc::surface_checked once the surface passes.
+bool only_faces(const Plc& plc) {
+    return plc.segments.empty() &&
+           std::all_of(plc.facets.begin(), plc.facets.end(), [](const PlcFacet& f) {
+               return f.loops.size() == 1 && f.holes.empty();
+           });
+}
+
+}  // namespace
+
 SurfaceReading prepare_surface_mesh(Plc& plc, bool merge_coplanar_faces) {
     SurfaceReading made;
+    const bool faces = only_faces(plc);
+    plc.surface_checked = false;
     made.warped_faces = split_warped_facets(plc);
     // Checked face by face, before merging: the defects are named by the file's faces.
     require_valid_surface(plc);
@@ -18,6 +36,7 @@ SurfaceReading prepare_surface_mesh(Plc& plc, bool merge_coplanar_faces) {
         made.merged_faces = merge.faces;
         made.merged_polygons = merge.polygons;
     }
+    plc.surface_checked = faces;
     return made;
 }
 

@@ -169,8 +169,10 @@ void find_intersections(const Plc& plc,
         boxes.push_back(box);
     }
     BoxGrid grid(bounds, boxes);
+    std::vector<std::size_t> near;
     for (std::size_t i = 0; i < tris.triangles.size(); ++i) {
-        for (const std::size_t j : grid.near(boxes[i], i)) {
+        grid.near(boxes[i], i, near);
+        for (const std::size_t j : near) {
             // Each pair once (j > i), never within one facet, and a pair of facets once.
             if (j <= i || tris.facet[j] == tris.facet[i] || !boxes[i].meets(boxes[j])) {
                 continue;

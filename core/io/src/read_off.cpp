@@ -1,5 +1,6 @@
 // OFF (Geomview's Object File Format): a keyword, the counts, the vertices, the faces.
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -57,13 +58,20 @@ Plc read_off(const std::string& file, std::string_view bytes) {
     }
     Plc plc;
     plc.points.index_base = 0;
+    // Sized once (growing them copied every point and face again), but never beyond what the
+    // file can hold: a vertex line takes 6 bytes at least, a face line 8.
+    plc.points.points.reserve(std::min(vertices, limit / 6));
+    plc.facets.reserve(std::min(faces, limit / 8));
+    // One vector of fields for every line.
+    std::vector<std::string_view> xyz;
+    std::vector<std::string_view> tokens;
     for (std::uint64_t v = 0; v < vertices; ++v) {
         if (!lines.next()) {
             source.fail(lines.number(),
                         "file ends in vertex " + std::to_string(v) + " of the " +
                             std::to_string(vertices) + " declared");
         }
-        const auto xyz = split_whitespace(lines.text());
+        split_whitespace(lines.text(), xyz);
         if (xyz.size() < 3 || (!extra_vertex_fields && xyz.size() != 3)) {
             source.fail(lines.number(),
                         "vertex " + std::to_string(v) + ": expected x y z, found " +
@@ -82,7 +90,7 @@ Plc read_off(const std::string& file, std::string_view bytes) {
                         "file ends in face " + std::to_string(f) + " of the " +
                             std::to_string(faces) + " declared");
         }
-        const auto tokens = split_whitespace(lines.text());
+        split_whitespace(lines.text(), tokens);
         const std::uint64_t n = source.count_at_most(
             tokens[0], lines.number(), "number of corners", limit, "the file's size in bytes");
         if (n < 3) {

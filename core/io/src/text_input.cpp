@@ -63,6 +63,12 @@ bool LineReader::next() {
 
 std::vector<std::string_view> split_whitespace(std::string_view line) {
     std::vector<std::string_view> fields;
+    split_whitespace(line, fields);
+    return fields;
+}
+
+void split_whitespace(std::string_view line, std::vector<std::string_view>& fields) {
+    fields.clear();
     std::size_t i = 0;
     while (i < line.size()) {
         while (i < line.size() && is_space(line[i])) {
@@ -76,7 +82,6 @@ std::vector<std::string_view> split_whitespace(std::string_view line) {
             fields.push_back(line.substr(start, i - start));
         }
     }
-    return fields;
 }
 
 std::vector<std::string_view> split_fields(std::string_view line) {

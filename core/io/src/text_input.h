@@ -37,6 +37,9 @@ private:
 /// Whitespace-separated fields.
 std::vector<std::string_view> split_whitespace(std::string_view line);
 
+/// The same into `fields`, replacing its contents: a reader's loop over lines reuses one vector.
+void split_whitespace(std::string_view line, std::vector<std::string_view>& fields);
+
 /// Fields separated by commas when the line has one (each trimmed, none may be empty; an empty
 /// field comes back as ""), else by whitespace.
 std::vector<std::string_view> split_fields(std::string_view line);

@@ -10,9 +10,11 @@
 
 #include <gtest/gtest.h>
 
+#include "cavity/core/base/error.h"
 #include "cavity/core/cdt/cdt.h"
 #include "cavity/core/cdt/cdt_carve.h"
 #include "cavity/core/cdt/cdt_validate.h"
+#include "cavity/core/cdt/plc_validity.h"
 #include "cavity/core/cdt/read_plc.h"
 #include "plc_builders.h"
 #include "temp_dir.h"
@@ -268,6 +270,82 @@ TEST(CoplanarFacets, OnlyFacesWithTheSameMarkerAndPlaneAreMerged) {
     bent.facets[1].marker = bent.facets[0].marker;
     EXPECT_EQ(merge_coplanar_facets(bent).polygons, 0u);
     EXPECT_EQ(bent.facets.size(), 2u);
+}
+
+// --- the protected PLC check skipped for a checked surface (cdt.cpp) ---------------------------
+
+TEST(CheckedSurface, OnlyAReadSurfaceMeshIsMarked) {
+    test::TempDir dir;
+    EXPECT_TRUE(read_plc(dir.write("plate.off", plate_with_hole_off())).surface_checked);
+    EXPECT_TRUE(
+        read_plc(dir.write("fan.off", cube_with_fan_top_off()), nullptr, false).surface_checked);
+    EXPECT_FALSE(
+        read_plc(dir.write("one.poly", "3 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n1 0\n1\n3 0 1 2\n"))
+            .surface_checked);
+    // Faces made in memory are marked as the reader's, but not with a segment, which the surface
+    // check does not look at; preparing again clears a mark a changed PLC still carries.
+    Plc faces = read_plc(dir.write("fan.off", cube_with_fan_top_off()), nullptr, false);
+    prepare_surface_mesh(faces);
+    EXPECT_TRUE(faces.surface_checked);
+    faces.segments.push_back({0, 8});
+    prepare_surface_mesh(faces);
+    EXPECT_FALSE(faces.surface_checked);
+}
+
+TEST(CheckedSurface, TheSkippedCheckFindsNothingOnCheckedSurfaces) {
+    // The oracle: protected_plc_violations on the protected PLC of each checked surface, merged
+    // or not, with and without split points on its edges.
+    test::TempDir dir;
+    std::size_t split = 0;
+    for (const std::string& off :
+         {plate_with_hole_off(), plate_with_hole_off(0.375), cube_with_fan_top_off()}) {
+        for (const bool merge : {true, false}) {
+            const Plc plc = read_plc(dir.write("surface.off", off), nullptr, merge);
+            ASSERT_TRUE(plc.surface_checked);
+            const Cdt cdt = build_cdt(plc, CdtOptions{true});
+            split += cdt.protection.inserted.size();
+            EXPECT_TRUE(cdt.plc.surface_checked);
+            EXPECT_EQ(protected_plc_violations(cdt.plc), std::vector<std::string>{});
+        }
+    }
+    EXPECT_GT(split, 0u);  // edge protection's split points are among the cases
+}
+
+/// A square facet at z = 0 and a triangle whose side from (2, 2, -1) to (3, 2, 1) pierces it.
+Plc pierced_square() {
+    return make_plc({{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {2, 2, -1}, {3, 2, 1}, {2, 3, 1}},
+                    {{{0, 1, 2, 3}}, {{4, 5, 6}}});
+}
+
+TEST(CheckedSurface, APolyOrAMarkedPlcWithASegmentIsStillChecked) {
+    // Every edge is a Delaunay edge: only the protected PLC check can refuse these.
+    const auto refused = [](const Plc& plc) {
+        try {
+            (void)build_cdt(plc, CdtOptions{true});
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    test::TempDir dir;
+    std::string poly =
+        "7 3 0 0\n0 0 0 0\n1 4 0 0\n2 4 4 0\n3 0 4 0\n4 2 2 -1\n5 3 2 1\n6 2 3 1\n2 0\n";
+    poly += "1\n4 0 1 2 3\n1\n3 4 5 6\n";
+    const Plc read = read_plc(dir.write("pierced.poly", poly));
+    ASSERT_FALSE(read.surface_checked);
+    EXPECT_NE(refused(read).find("10: facet 0: edge 4-5 (a side of facet 1 (line 12)) crosses it"),
+              std::string::npos)
+        << refused(read);
+    // A surface's faces with a segment through one: prepare_surface_mesh does not mark it.
+    Plc faces = read_plc(dir.write("fan.off", cube_with_fan_top_off()), nullptr, false);
+    const auto low = static_cast<std::uint32_t>(faces.points.size());
+    faces.points.points.push_back({1, 1, 1});
+    faces.points.points.push_back({1.25, 1.0625, 3.5});
+    faces.segments.push_back({low, low + 1});
+    prepare_surface_mesh(faces);
+    EXPECT_FALSE(faces.surface_checked);
+    EXPECT_NE(refused(faces).find("crosses it"), std::string::npos) << refused(faces);
+    EXPECT_NE(refused(pierced_square()).find("crosses it"), std::string::npos);
 }
 
 }  // namespace

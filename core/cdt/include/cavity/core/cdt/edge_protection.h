@@ -22,6 +22,12 @@ using Edge = std::array<std::uint32_t, 2>;
 std::vector<Edge> unprotected_edges(const Plc& plc,
                                     std::span<const std::array<std::uint32_t, 4>> tets);
 
+/// The same for `edges`, the PLC's plc_edges already built (sorted, each once), and `points`, its
+/// number of points: a caller that needs the edges again builds and sorts them once.
+std::vector<Edge> unprotected_edges(std::span<const Edge> edges,
+                                    std::size_t points,
+                                    std::span<const std::array<std::uint32_t, 4>> tets);
+
 /// The Delaunay triangulation of the PLC's points (0-based indices, the perturbation keyed on
 /// them). \throws Error when two points coincide (naming them as the file numbers them) or the
 /// points have no 3D triangulation.

@@ -48,6 +48,11 @@ std::vector<std::string> protected_plc_violations(const Plc& plc);
 std::vector<std::string> edge_violations(const Plc& plc,
                                          std::span<const std::array<std::uint32_t, 2>> edges);
 
+/// The same with `all`, the PLC's plc_edges already built.
+std::vector<std::string> edge_violations(const Plc& plc,
+                                         std::span<const std::array<std::uint32_t, 2>> all,
+                                         std::span<const std::array<std::uint32_t, 2>> edges);
+
 /// plc_violations, as an exception.
 /// \throws Error listing the first violations and their number.
 void require_valid_plc(const Plc& plc, std::span<const std::array<std::uint32_t, 4>> delaunay_tets);
@@ -56,7 +61,9 @@ void require_valid_plc(const Plc& plc, std::span<const std::array<std::uint32_t,
 void require_valid_protected_plc(const Plc& plc);
 
 /// edge_violations, as an exception. \throws Error listing the first violations.
+/// `all` is the PLC's plc_edges.
 void require_edges_meet_properly(const Plc& plc,
+                                 std::span<const std::array<std::uint32_t, 2>> all,
                                  std::span<const std::array<std::uint32_t, 2>> edges);
 
 }  // namespace cavity::core

@@ -56,6 +56,12 @@ struct Plc {
     std::vector<PlcVolumeHole> volume_holes;
     std::vector<PlcRegion> regions;
     std::string source;
+    /// Set only by prepare_surface_mesh (read_plc.h): the facets are a surface mesh's one-loop
+    /// faces that passed require_valid_surface, at most merged by merge_coplanar_facets, and there
+    /// are no segments. Edge protection keeps it (its split points lie exactly on the edges); the
+    /// CDT then skips the protected PLC check, proven to pass (cdt.cpp). Code that changes the
+    /// points, facets or segments otherwise must clear it.
+    bool surface_checked = false;
 };
 
 /// "facet N (line L)" with N as the file numbers its facets (a binary file's: "facet N"); for a PLC
