@@ -1,3 +1,4 @@
+#include <charconv>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -36,13 +37,27 @@ struct CdtArgs {
 /// PREFIX.face: the polygons' triangles, numbered like the points, with the facet markers.
 void write_faces(core::AtomicFileGroup::Writer& out, const core::Cdt& cdt) {
     const auto base = static_cast<std::uint32_t>(cdt.plc.points.index_base);
-    out.write(std::to_string(cdt.faces.size()) + " 1\n");
+    // Each line formatted in place and appended whole, the lines written in large pieces: a
+    // string per number and a write per line cost as much as the .ele.
+    std::string text = std::to_string(cdt.faces.size()) + " 1\n";
+    char line[5 * 21];
     for (std::size_t i = 0; i < cdt.faces.size(); ++i) {
         const auto& f = cdt.faces[i];
-        out.write(std::to_string(i + base) + " " + std::to_string(f.v[0] + base) + " " +
-                  std::to_string(f.v[1] + base) + " " + std::to_string(f.v[2] + base) + " " +
-                  std::to_string(f.marker) + "\n");
+        char* end = std::to_chars(line, line + sizeof line, i + base).ptr;
+        for (const std::uint32_t v : f.v) {
+            *end++ = ' ';
+            end = std::to_chars(end, line + sizeof line, v + base).ptr;
+        }
+        *end++ = ' ';
+        end = std::to_chars(end, line + sizeof line, f.marker).ptr;
+        *end++ = '\n';
+        text.append(line, static_cast<std::size_t>(end - line));
+        if (text.size() > (std::size_t{1} << 16)) {
+            out.write(text);
+            text.clear();
+        }
     }
+    out.write(text);
 }
 
 /// Inserts the points of `file` in order. A refused point (or a duplicate) is reported on stderr

@@ -593,46 +593,76 @@ using TriangleSides = std::vector<std::pair<Triangle, Sides>>;
 /// For tetrahedra on the points 0 to vertices - 1.
 TriangleSides triangle_sides(std::span<const std::array<std::uint32_t, 4>> tets,
                              std::size_t vertices) {
-    // Sorting (triangle, tetrahedron) pairs groups each triangle's tetrahedra, in increasing
-    // tetrahedron order; a map of triangles cost a node allocation per triangle. The pairs are
-    // made in increasing tetrahedron order and sorted by three stable counting sorts on the
-    // triangle's vertices, least significant first: the order of a comparison sort of the pairs,
-    // in linear time (the comparison sort was a third of validating a surface mesh's CDT).
-    std::vector<std::pair<Triangle, std::uint32_t>> faces;
-    faces.reserve(4 * tets.size());
-    for (std::uint32_t t = 0; t < tets.size(); ++t) {
-        for (int f = 0; f < 4; ++f) {
-            const auto g = facet_vertices(tets[t], f);
-            Triangle s{g[0], g[1], g[2]};
-            std::sort(s.begin(), s.end());
-            faces.push_back({s, t});
-        }
+    // Grouping (triangle, tetrahedron) pairs by sorting them gives each triangle's tetrahedra in
+    // increasing tetrahedron order; a map of triangles cost a node allocation per triangle. A
+    // counting sort by the lowest vertex, then a sort of each (short) run by the other two
+    // vertices and the tetrahedron: the order of a comparison sort of all pairs, in about linear
+    // time. Three counting sorts, one per vertex, moved every pair three times.
+    struct Pair {
+        std::uint64_t rest;  ///< the middle vertex << 32 | the highest
+        std::uint32_t lowest;
+        std::uint32_t tet;
+    };
+
+    // A tetrahedron's vertices sorted once give its four triangles sorted: drop one of them.
+    const auto sorted_vertices = [](std::array<std::uint32_t, 4> v) {
+        const auto order = [&](std::size_t i, std::size_t j) {
+            if (v[j] < v[i]) {
+                std::swap(v[i], v[j]);
+            }
+        };
+        order(0, 1);
+        order(2, 3);
+        order(0, 2);
+        order(1, 3);
+        order(1, 2);
+        return v;
+    };
+    std::vector<std::uint32_t> start(vertices + 1, 0);
+    for (const auto& t : tets) {
+        const auto v = sorted_vertices(t);
+        start[v[0] + 1] += 3;  // the lowest vertex is the lowest of all triangles but one
+        ++start[v[1] + 1];
     }
-    std::vector<std::pair<Triangle, std::uint32_t>> sorted(faces.size());
-    std::vector<std::size_t> start(vertices + 1);
-    for (std::size_t k = 3; k-- > 0;) {
-        std::fill(start.begin(), start.end(), 0);
-        for (const auto& face : faces) {
-            ++start[face.first[k] + 1];
+    for (std::size_t v = 0; v < vertices; ++v) {
+        start[v + 1] += start[v];
+    }
+    std::vector<Pair> pairs(4 * tets.size());
+    {
+        std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+        const auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t t) {
+            pairs[next[a]++] = {(std::uint64_t{b} << 32) | c, a, t};
+        };
+        for (std::uint32_t t = 0; t < tets.size(); ++t) {
+            const auto v = sorted_vertices(tets[t]);
+            add(v[1], v[2], v[3], t);
+            add(v[0], v[2], v[3], t);
+            add(v[0], v[1], v[3], t);
+            add(v[0], v[1], v[2], t);
         }
-        for (std::size_t v = 0; v < vertices; ++v) {
-            start[v + 1] += start[v];
-        }
-        for (const auto& face : faces) {
-            sorted[start[face.first[k]]++] = face;
-        }
-        faces.swap(sorted);
     }
     TriangleSides sides;
-    for (const auto& [g, t] : faces) {
-        if (sides.empty() || sides.back().first != g) {
-            sides.push_back({g, Sides{}});
+    sides.reserve(pairs.size() / 2 + 1);
+    for (std::size_t v = 0; v < vertices; ++v) {
+        const auto run = std::span(pairs).subspan(start[v], start[v + 1] - start[v]);
+        // By triangle, then tetrahedron: the pairs are distinct, so the order is a total one.
+        std::sort(run.begin(), run.end(), [](const Pair& x, const Pair& y) {
+            return x.rest != y.rest ? x.rest < y.rest : x.tet < y.tet;
+        });
+        for (std::size_t i = 0; i < run.size(); ++i) {
+            const Pair& p = run[i];
+            if (i == 0 || run[i - 1].rest != p.rest) {
+                const Triangle g{p.lowest,
+                                 static_cast<std::uint32_t>(p.rest >> 32),
+                                 static_cast<std::uint32_t>(p.rest)};
+                sides.push_back({g, Sides{}});
+            }
+            Sides& on = sides.back().second;
+            if (on.count < 2) {
+                on.tet[on.count] = p.tet;
+            }
+            ++on.count;
         }
-        Sides& on = sides.back().second;
-        if (on.count < 2) {
-            on.tet[on.count] = t;
-        }
-        ++on.count;
     }
     return sides;
 }
@@ -684,9 +714,38 @@ void check_points_outside(const Plc& plc,
     }
 }
 
+/// The facet pairing of complex_from_tets, read off the triangles' sides (found anyway for the
+/// checks below) instead of matched a second time; nullopt when a triangle has more than two
+/// tetrahedra, for complex_from_tets to refuse in its own words.
+std::optional<std::vector<std::int32_t>> facet_pairing(
+    std::span<const std::array<std::uint32_t, 4>> tets, const TriangleSides& sides) {
+    std::vector<std::int32_t> across(4 * tets.size(), -1);
+    const auto slot_of_apex = [&](std::uint32_t t, const Triangle& g) {
+        const auto& v = tets[t];
+        std::size_t s = 0;
+        while (s < 3 && (v[s] == g[0] || v[s] == g[1] || v[s] == g[2])) {
+            ++s;
+        }
+        return s;  // g is a facet of tets[t], so the one vertex not in it
+    };
+    for (const auto& [g, on] : sides) {
+        if (on.count > 2) {
+            return std::nullopt;
+        }
+        if (on.count == 2) {
+            across[4 * std::size_t{on.tet[0]} + slot_of_apex(on.tet[0], g)] =
+                static_cast<std::int32_t>(on.tet[1]);
+            across[4 * std::size_t{on.tet[1]} + slot_of_apex(on.tet[1], g)] =
+                static_cast<std::int32_t>(on.tet[0]);
+        }
+    }
+    return across;
+}
+
 /// The whole hull: the complex glued with ghosts must be valid with a convex boundary.
 void check_hull_complex(const Plc& plc,
                         std::span<const std::array<std::uint32_t, 4>> tets,
+                        const TriangleSides& sides,
                         Report& report) {
     const int base = plc.points.index_base;
     // The complex checks name vertices by their ids: number them as the file does (ids shifted by
@@ -711,7 +770,10 @@ void check_hull_complex(const Plc& plc,
     }
     const Geometry geometry(std::move(points), std::move(keys), {}, std::move(exact));
     try {
-        for (const std::string& p : check_complex(complex_from_tets(numbered), geometry)) {
+        const auto across = facet_pairing(tets, sides);
+        const ArrayStorage complex =
+            across ? complex_from_tets(numbered, *across) : complex_from_tets(numbered);
+        for (const std::string& p : check_complex(complex, geometry)) {
             report.add(p);
         }
     } catch (const Error& e) {
@@ -789,7 +851,7 @@ CdtValidation validate_cdt(const Plc& plc,
         check_carved_complex(plc, tets, sides, report);
         check_points_outside(plc, tets, used, report);
     } else {
-        check_hull_complex(plc, tets, report);
+        check_hull_complex(plc, tets, sides, report);
     }
     for (std::size_t v = 0; v < used.size(); ++v) {
         if (!carved && !used[v]) {

@@ -30,21 +30,31 @@ std::string tet_name(const TetVertices& t) {
 }  // namespace
 
 ArrayStorage complex_from_tets(std::span<const std::array<std::uint32_t, 4>> tets) {
+    std::size_t point_count = 0;
+    for (const auto& t : tets) {
+        point_count = std::max(point_count, std::size_t{*std::max_element(t.begin(), t.end())} + 1);
+    }
+    // The one facet matcher (io/tet_adjacency.h) pairs the solid facets. Mirroring a tetrahedron
+    // keeps its triangles, so the pairing of the tetrahedra as given is the stored ones'.
+    return complex_from_tets(tets, match_facets(tets, point_count));
+}
+
+ArrayStorage complex_from_tets(std::span<const std::array<std::uint32_t, 4>> tets,
+                               std::span<const std::int32_t> across) {
     ArrayStorage storage;
     std::vector<Tet> stored;
     stored.reserve(tets.size());
-    std::size_t point_count = 0;
     for (const auto& t : tets) {
         stored.push_back({t[1], t[0], t[2], t[3]});  // positive volume → orient3d > 0
         storage.add_tetrahedron(stored.back());
-        point_count = std::max(point_count, std::size_t{*std::max_element(t.begin(), t.end())} + 1);
     }
-    // The one facet matcher (io/tet_adjacency.h) pairs the solid facets; slot t is stored[t].
-    const std::vector<std::int32_t> across = match_facets(stored, point_count, tets);
+    // Slots 0 and 1 swap places in the stored order, and with them the facets opposite them.
+    constexpr std::array<std::size_t, 4> kGivenSlot{1, 0, 2, 3};
     std::vector<HalfFacet> boundary;
     for (TetId t = 0; t < stored.size(); ++t) {
         for (int f = 0; f < 4; ++f) {
-            const std::int32_t other = across[4 * std::size_t{t} + static_cast<std::size_t>(f)];
+            const std::int32_t other =
+                across[4 * std::size_t{t} + kGivenSlot[static_cast<std::size_t>(f)]];
             if (other < 0) {
                 boundary.push_back(half_facet(t, f));
                 continue;

@@ -263,6 +263,32 @@ TEST(Cdt, OneLoopPolygonFloodMustReachEveryLoopSide) {
     }));
 }
 
+/// The validator pairs the tetrahedra on each triangle once, for its own checks and for the
+/// complex it glues; a list that is no complex is still refused in the complex builder's words:
+/// a tetrahedron listed twice (each triangle then on two, so paired), and one listed twice among
+/// others (an inner triangle then on three).
+TEST(Cdt, ValidatorRefusesTetrahedraThatAreNoComplex) {
+    const auto has = [](const CdtValidation& v, const std::string& what) {
+        return std::any_of(v.problems.begin(), v.problems.end(), [&](const std::string& p) {
+            return p.find(what) != std::string::npos;
+        });
+    };
+    const Plc one = make_plc({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {});
+    auto twice = delaunay(one);
+    ASSERT_EQ(twice.size(), 1u);
+    ASSERT_TRUE(validate_cdt(one, twice).ok());
+    twice.push_back(twice[0]);
+    EXPECT_TRUE(has(validate_cdt(one, twice), "is listed twice"));
+
+    auto pts = box_corners(4, 4, 0, 4);
+    pts.push_back({1.5, 2.5, 1.75});
+    const Plc box = make_plc(pts, {});
+    auto tets = delaunay(box);
+    ASSERT_TRUE(validate_cdt(box, tets).ok());
+    tets.push_back(tets[0]);
+    EXPECT_TRUE(has(validate_cdt(box, tets), "has more than two tetrahedra"));
+}
+
 /// Schönhardt's polyhedron: a twisted triangular prism whose side quadrilaterals are cut along
 /// their reflex diagonals. It has no tetrahedralization, hence no CDT without extra vertices.
 TEST(Cdt, Schoenhardt) {

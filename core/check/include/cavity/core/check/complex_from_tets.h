@@ -21,6 +21,13 @@ namespace cavity::core {
 /// when the boundary is not closed.
 ArrayStorage complex_from_tets(std::span<const std::array<std::uint32_t, 4>> tets);
 
+/// complex_from_tets(tets) with the solid facets already paired by the caller, who found the
+/// triangles for checks of its own: across[4 t + f] is the tetrahedron on the other side of the
+/// facet of tets[t] opposite its vertex tets[t][f], or -1 on the boundary (no triangle has more
+/// than two tetrahedra). The pairing is a function of the tetrahedra, so the complex is the same.
+ArrayStorage complex_from_tets(std::span<const std::array<std::uint32_t, 4>> tets,
+                               std::span<const std::int32_t> across);
+
 /// The live solid tetrahedra, in slot order.
 std::vector<std::array<std::uint32_t, 4>> solid_tets(const ArrayStorage& storage);
 
