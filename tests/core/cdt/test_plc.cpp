@@ -90,6 +90,52 @@ Plc cube_with_square() {
     return make_plc(pts, facets);
 }
 
+/// plc_edges against the obvious construction (every segment and loop side as {min, max}, sorted,
+/// duplicates dropped) on random PLCs: segments in both directions, loops sharing sides with each
+/// other and with segments, sides repeated within one loop, and points no edge uses.
+TEST(PlcEdges, SortedOnceEachAsTheComparisonSortGivesThem) {
+    Random random(20261128);
+    for (int trial = 0; trial < 200; ++trial) {
+        Plc plc;
+        const auto points = static_cast<std::uint32_t>(1 + random.below(40));
+        for (std::uint32_t i = 0; i < points; ++i) {
+            plc.points.points.push_back({static_cast<double>(i), 0.0, 0.0});
+        }
+        const auto pick = [&] { return static_cast<std::uint32_t>(random.below(points)); };
+        for (std::uint64_t s = random.below(6); s > 0; --s) {
+            plc.segments.push_back({pick(), pick()});
+        }
+        for (std::uint64_t f = random.below(8); f > 0; --f) {
+            PlcFacet facet;
+            for (std::uint64_t l = 1 + random.below(2); l > 0; --l) {
+                std::vector<std::uint32_t> loop;
+                for (std::uint64_t k = 3 + random.below(5); k > 0; --k) {
+                    loop.push_back(pick());
+                }
+                facet.loops.push_back(loop);
+            }
+            plc.facets.push_back(facet);
+        }
+        std::vector<std::array<std::uint32_t, 2>> expected;
+        const auto add = [&](std::uint32_t a, std::uint32_t b) {
+            expected.push_back({std::min(a, b), std::max(a, b)});
+        };
+        for (const auto& s : plc.segments) {
+            add(s[0], s[1]);
+        }
+        for (const auto& facet : plc.facets) {
+            for (const auto& loop : facet.loops) {
+                for (std::size_t i = 0; i < loop.size(); ++i) {
+                    add(loop[i], loop[(i + 1) % loop.size()]);
+                }
+            }
+        }
+        std::sort(expected.begin(), expected.end());
+        expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+        EXPECT_EQ(plc_edges(plc), expected) << "trial " << trial;
+    }
+}
+
 TEST(PlcValidity, ValidPlcsAreAccepted) {
     EXPECT_TRUE(violations(make_plc(cube_points(), cube_sides())).empty());
     // A box with a hole: a square ring through the cube.
