@@ -33,19 +33,30 @@ void VtkBinaryArray::bytes(std::string_view raw) {
 }
 
 void VtkBinaryArray::compress_block() {
-    uLongf size = compressBound(static_cast<uLong>(block_.size()));
+    // One zlib stream per block (VTK inflates each alone), at zlib's fastest level, with or
+    // without its search for repeated strings (VtkPacking).
+    z_stream stream{};
+    if (deflateInit2(&stream,
+                     Z_BEST_SPEED,
+                     Z_DEFLATED,
+                     15,
+                     8,
+                     packing_ == VtkPacking::kSearch ? Z_DEFAULT_STRATEGY : Z_HUFFMAN_ONLY) !=
+        Z_OK) {
+        throw std::bad_alloc();  // the only failure with valid arguments
+    }
+    uLong size = deflateBound(&stream, static_cast<uLong>(block_.size()));
     const std::size_t at = compressed_.size();
     compressed_.resize(at + size);
-    const int status = compress2(reinterpret_cast<Bytef*>(compressed_.data() + at),
-                                 &size,
-                                 reinterpret_cast<const Bytef*>(block_.data()),
-                                 static_cast<uLong>(block_.size()),
-                                 Z_BEST_SPEED);
-    if (status == Z_MEM_ERROR) {
-        throw std::bad_alloc();
-    }
-    if (status != Z_OK) {
-        throw InternalError("zlib compress2 failed with status " + std::to_string(status));
+    stream.next_in = reinterpret_cast<Bytef*>(block_.data());
+    stream.avail_in = static_cast<uInt>(block_.size());
+    stream.next_out = reinterpret_cast<Bytef*>(compressed_.data() + at);
+    stream.avail_out = static_cast<uInt>(size);
+    const int status = deflate(&stream, Z_FINISH);
+    size = stream.total_out;
+    deflateEnd(&stream);
+    if (status != Z_STREAM_END) {
+        throw InternalError("zlib deflate failed with status " + std::to_string(status));
     }
     compressed_.resize(at + size);
     append_uint64(sizes_, size);
