@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "cavity/core/base/bucket_sort.h"
 #include "ear_clipping.h"
 #include "exact_plane.h"
 
@@ -236,7 +237,7 @@ CoplanarMerge merge_coplanar_facets(Plc& plc) {
             sides.emplace_back(side_key(loop[i], loop[(i + 1) % loop.size()]), f);
         }
     }
-    std::sort(sides.begin(), sides.end());
+    bucket_sort(sides, [](const auto& side) { return std::size_t{side.first >> 32}; });
     std::vector<std::optional<ExactPlane>> planes(n);
     std::vector<bool> planed(n, false);
     const auto plane_of = [&](std::uint32_t f) -> const std::optional<ExactPlane>& {

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "box_grid.h"
+#include "cavity/core/base/bucket_sort.h"
 #include "cavity/core/base/error.h"
 #include "ear_clipping.h"
 #include "exact_plane.h"
@@ -31,7 +32,7 @@ void find_edge_defects(const Plc& plc, SurfaceDefects& defects) {
             }
         }
     }
-    std::sort(sides.begin(), sides.end());
+    bucket_sort(sides, [](const auto& side) { return std::size_t{side.first[0]}; });
     for (std::size_t i = 0; i < sides.size();) {
         SurfaceEdge edge{sides[i].first, {}};
         for (; i < sides.size() && sides[i].first == edge.edge; ++i) {
