@@ -34,20 +34,26 @@ void VtkBinaryArray::bytes(std::string_view raw) {
 
 void VtkBinaryArray::compress_block() {
     // One zlib stream per block (VTK inflates each alone), at zlib's fastest level, with or
-    // without its search for repeated strings (VtkPacking).
+    // without its search for repeated strings (VtkPacking). Room first, so that a failed resize
+    // leaves no stream behind: compressBound bounds deflate's output at these settings (zlib's
+    // default window and memory level).
+    uLong size = compressBound(static_cast<uLong>(block_.size()));
+    const std::size_t at = compressed_.size();
+    compressed_.resize(at + size);
     z_stream stream{};
-    if (deflateInit2(&stream,
+    const int init =
+        deflateInit2(&stream,
                      Z_BEST_SPEED,
                      Z_DEFLATED,
                      15,
                      8,
-                     packing_ == VtkPacking::kSearch ? Z_DEFAULT_STRATEGY : Z_HUFFMAN_ONLY) !=
-        Z_OK) {
-        throw std::bad_alloc();  // the only failure with valid arguments
+                     packing_ == VtkPacking::kSearch ? Z_DEFAULT_STRATEGY : Z_HUFFMAN_ONLY);
+    if (init == Z_MEM_ERROR) {
+        throw std::bad_alloc();
     }
-    uLong size = deflateBound(&stream, static_cast<uLong>(block_.size()));
-    const std::size_t at = compressed_.size();
-    compressed_.resize(at + size);
+    if (init != Z_OK) {
+        throw InternalError("zlib deflateInit2 failed with status " + std::to_string(init));
+    }
     stream.next_in = reinterpret_cast<Bytef*>(block_.data());
     stream.avail_in = static_cast<uInt>(block_.size());
     stream.next_out = reinterpret_cast<Bytef*>(compressed_.data() + at);
