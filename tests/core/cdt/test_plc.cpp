@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
+#include <set>
 #include <utility>
 #include <variant>
 
@@ -116,23 +117,21 @@ TEST(PlcEdges, SortedOnceEachAsTheComparisonSortGivesThem) {
             }
             plc.facets.push_back(facet);
         }
-        std::vector<std::array<std::uint32_t, 2>> expected;
-        const auto add = [&](std::uint32_t a, std::uint32_t b) {
-            expected.push_back({std::min(a, b), std::max(a, b)});
-        };
-        for (const auto& s : plc.segments) {
-            add(s[0], s[1]);
-        }
+        // The oracle: an ordered set of {min, max} pairs (loop sides read end to start).
+        std::set<std::array<std::uint32_t, 2>> expected;
+        std::vector<std::array<std::uint32_t, 2>> sides(plc.segments.begin(), plc.segments.end());
         for (const auto& facet : plc.facets) {
             for (const auto& loop : facet.loops) {
                 for (std::size_t i = 0; i < loop.size(); ++i) {
-                    add(loop[i], loop[(i + 1) % loop.size()]);
+                    sides.push_back({loop[(i + 1) % loop.size()], loop[i]});
                 }
             }
         }
-        std::sort(expected.begin(), expected.end());
-        expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
-        EXPECT_EQ(plc_edges(plc), expected) << "trial " << trial;
+        for (const auto& [p, q] : sides) {
+            expected.insert({std::min(p, q), std::max(p, q)});
+        }
+        const std::vector<std::array<std::uint32_t, 2>> sorted(expected.begin(), expected.end());
+        EXPECT_EQ(plc_edges(plc), sorted) << "trial " << trial;
     }
 }
 
