@@ -4,7 +4,9 @@
 #   scripts/test.sh asan       the same under AddressSanitizer + UndefinedBehaviorSanitizer
 #   scripts/test.sh debug      a debug build with the expensive checks (the whole complex validated
 #                              after insertion batches, flips, deletions and polygons) over the
-#                              degenerate corpus, the CDT and the editing suites
+#                              degenerate corpus, the CDT and the editing suites; it builds only
+#                              the test programs those suites live in (CMakePresets.json lists
+#                              them, and architecture.debug_preset_targets checks the list)
 #   scripts/test.sh long       the long suites (>= 10^7 oracle queries per predicate, ...)
 #   scripts/test.sh tsan       the parallel construction's and the parallel sort's suites under
 #                              ThreadSanitizer
