@@ -245,7 +245,7 @@ bool in_facet(const ExactPlane& plane,
             centroid[k] = (a[k] + b[k] + c[k]) / 3;
         }
     }
-    return region.contains(centroid);
+    return region.contains(std::move(centroid));
 }
 
 /// A polygon that is one triangle without hole points, when the mesh has that triangle: then it is

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <utility>
 
 #include "cavity/predicates/detail/expansion.h"
 #include "cavity/predicates/dyadic.h"
@@ -38,6 +39,13 @@ Point2 project(const ExactPoint& p, int drop) {
     const std::size_t u = drop == 0 ? 1 : 0;
     const std::size_t v = drop == 2 ? 1 : 2;
     return point2(p[u], p[v]);
+}
+
+/// The same, taking p's coordinates rather than copying them (two GMP rationals each).
+Point2 project(ExactPoint&& p, int drop) {
+    const std::size_t u = drop == 0 ? 1 : 0;
+    const std::size_t v = drop == 2 ? 1 : 2;
+    return point2(std::move(p[u]), std::move(p[v]));
 }
 
 /// p.v > x.v, by the intervals when they are apart.
@@ -246,14 +254,27 @@ Integer scaled(double x, int scale) {
     return predicates::scaled_to_integer<Integer>(x, scale);
 }
 
-/// numerator * 2^scale / denominator (denominator != 0), reduced once.
-Rational dyadic_quotient(Integer numerator, Integer denominator, int scale) {
+/// out = numerator * 2^scale / denominator (denominator != 0), reduced once, written into out's
+/// own integers (no copy of the operands).
+void set_dyadic_quotient(Rational& out,
+                         const Integer& numerator,
+                         const Integer& denominator,
+                         int scale) {
+    const mpq_ptr q = out.backend().data();
     if (scale >= 0) {
-        numerator <<= static_cast<unsigned>(scale);
+        mpz_mul_2exp(mpq_numref(q), numerator.backend().data(), static_cast<mp_bitcnt_t>(scale));
+        mpz_set(mpq_denref(q), denominator.backend().data());
     } else {
-        denominator <<= static_cast<unsigned>(-scale);
+        mpz_set(mpq_numref(q), numerator.backend().data());
+        mpz_mul_2exp(mpq_denref(q), denominator.backend().data(), static_cast<mp_bitcnt_t>(-scale));
     }
-    return Rational(std::move(numerator), std::move(denominator));
+    mpq_canonicalize(q);
+}
+
+Rational dyadic_quotient(const Integer& numerator, const Integer& denominator, int scale) {
+    Rational out;
+    set_dyadic_quotient(out, numerator, denominator, scale);
+    return out;
 }
 
 /// a + (tn / td)(b - a) for the integers a, b, tn, td (td != 0), scaled by 2^scale: one
@@ -659,13 +680,43 @@ mpz_srcptr raw(const Integer& x) {
     return x.backend().data();
 }
 
+/// out = x * 2^-scale (scaled() in place), for scale <= spacing_exponent(x) or x == 0: an
+/// integer that already has the room allocates nothing.
+void set_scaled(Integer& out, double x, int scale) {
+    if (x == 0.0) {
+        mpz_set_ui(raw(out), 0);
+        return;
+    }
+    const int k = predicates::spacing_exponent(x);
+    mpz_set_si(raw(out), static_cast<long>(std::ldexp(x, -k)));  // |mantissa| < 2^53
+    mpz_mul_2exp(raw(out), raw(out), static_cast<mp_bitcnt_t>(k - scale));
+}
+
+void set_scaled(std::array<Integer, 3>& out, const Point3& p, int scale) {
+    set_scaled(out[0], p.x, scale);
+    set_scaled(out[1], p.y, scale);
+    set_scaled(out[2], p.z, scale);
+}
+
+/// The integers `homogeneous` works in: a segment's ends and its parameter's numerator.
+struct SegmentWork {
+    std::array<Integer, 3>& a;
+    std::array<Integer, 3>& b;
+    Integer& n;
+};
+
 /// A point as integers v / w scaled by 2^-s (v a vector, w != 0): an input point with w = 1, or
 /// a point a + (n / d)(b - a) on a segment, with n and d scaled by their own power; false (v and
-/// w unset) for a line-plane point, or a parameter 0 / 0.
-bool homogeneous(const predicates::GenericPoint3& g, int s, std::array<Integer, 3>& v, Integer& w) {
+/// w unset) for a line-plane point, or a parameter 0 / 0. Written into integers the caller keeps,
+/// with `work` for the intermediate ones.
+bool homogeneous(const predicates::GenericPoint3& g,
+                 int s,
+                 std::array<Integer, 3>& v,
+                 Integer& w,
+                 const SegmentWork& work) {
     if (const auto* p = std::get_if<Point3>(&g)) {
-        v = scaled(*p, s);
-        w = 1;
+        set_scaled(v, *p, s);
+        mpz_set_ui(raw(w), 1);
         return true;
     }
     const auto* sp = std::get_if<predicates::SegmentParameterPoint>(&g);
@@ -676,15 +727,17 @@ bool homogeneous(const predicates::GenericPoint3& g, int s, std::array<Integer, 
     if (r == std::numeric_limits<int>::max()) {
         return false;
     }
-    const std::array<Integer, 3> a = scaled(sp->a, s);
-    std::array<Integer, 3> b = scaled(sp->b, s);
-    const Integer n = scaled(sp->numerator, r);
-    w = scaled(sp->denominator, r);
+    std::array<Integer, 3>& a = work.a;
+    std::array<Integer, 3>& b = work.b;
+    set_scaled(a, sp->a, s);
+    set_scaled(b, sp->b, s);
+    set_scaled(work.n, sp->numerator, r);
+    set_scaled(w, sp->denominator, r);
     for (std::size_t k = 0; k < 3; ++k) {
         // v = a d + n (b - a), with b - a formed in b's place.
         mpz_sub(raw(b[k]), raw(b[k]), raw(a[k]));
         mpz_mul(raw(v[k]), raw(a[k]), raw(w));
-        mpz_addmul(raw(v[k]), raw(n), raw(b[k]));
+        mpz_addmul(raw(v[k]), raw(work.n), raw(b[k]));
     }
     return true;
 }
@@ -732,11 +785,14 @@ std::optional<ExactPoint> ExactPlane::projected_crossing(const predicates::Gener
     }
     const ExplicitIntegers& e = explicit_integers();
     const int s = std::min({e.scale, spacing_of(p), spacing_of(q)});
-    std::array<Integer, 3> pv;
-    std::array<Integer, 3> qv;
-    Integer pw;
-    Integer qw;
-    if (!homogeneous(p, s, pv, pw) || !homogeneous(q, s, qv, qw)) {
+    CrossingWork& work = work_;
+    const std::array<Integer, 3>& pv = work.pv;
+    const std::array<Integer, 3>& qv = work.qv;
+    const Integer& pw = work.pw;
+    const Integer& qw = work.qw;
+    const SegmentWork segment{work.segment_a, work.segment_b, work.parameter};
+    if (!homogeneous(p, s, work.pv, work.pw, segment) ||
+        !homogeneous(q, s, work.qv, work.qw, segment)) {
         return std::nullopt;
     }
     // Scaled by 2^-s every coordinate is an integer, and D(x) = (e1 - e0) x (e2 - e0) . (x - e0)
@@ -748,7 +804,7 @@ std::optional<ExactPoint> ExactPlane::projected_crossing(const predicates::Gener
     // kept ones times 2^2k and 2^3k: h is 2^2k (m . v - (m . e0) w 2^k) with the kept m, and
     // the common factor 2^2k of both h cancels from the crossing.
     const auto shift = static_cast<mp_bitcnt_t>(e.scale - s);
-    Integer term;
+    Integer& term = work.term;
     const auto height = [&](const std::array<Integer, 3>& x, const Integer& w, Integer& h) {
         mpz_mul(raw(h), raw(e.normal[0]), raw(x[0]));
         mpz_addmul(raw(h), raw(e.normal[1]), raw(x[1]));
@@ -757,20 +813,20 @@ std::optional<ExactPoint> ExactPlane::projected_crossing(const predicates::Gener
         mpz_mul_2exp(raw(term), raw(term), shift);
         mpz_sub(raw(h), raw(h), raw(term));
     };
-    Integer h_p;
-    Integer h_q;
+    Integer& h_p = work.h_p;
+    Integer& h_q = work.h_q;
     height(pv, pw, h_p);
     height(qv, qw, h_q);
-    Integer w;
+    Integer& w = work.w;
     mpz_mul(raw(w), raw(h_p), raw(qw));
     mpz_submul(raw(w), raw(h_q), raw(pw));
     ExactPoint x;
+    Integer& numerator = work.numerator;
     for (std::size_t k = 0; k < 3; ++k) {
         if (static_cast<int>(k) != drop_) {
-            Integer numerator;
             mpz_mul(raw(numerator), raw(h_p), raw(qv[k]));
             mpz_submul(raw(numerator), raw(h_q), raw(pv[k]));
-            x[k] = dyadic_quotient(std::move(numerator), w, s);
+            set_dyadic_quotient(x[k], numerator, w, s);
         }
     }
     return x;
@@ -791,8 +847,12 @@ std::optional<ExactPoint> projected_centroid(std::span<const predicates::Generic
     Integer denominator;
     std::array<Integer, 3> v;
     Integer w;
+    std::array<Integer, 3> a;
+    std::array<Integer, 3> b;
+    Integer n;
+    const SegmentWork work{a, b, n};
     for (std::size_t i = 0; i < points.size(); ++i) {
-        if (!homogeneous(points[i], s, v, w)) {
+        if (!homogeneous(points[i], s, v, w, work)) {
             return std::nullopt;
         }
         if (i == 0) {
@@ -816,7 +876,7 @@ std::optional<ExactPoint> projected_centroid(std::span<const predicates::Generic
     ExactPoint x;
     for (std::size_t k = 0; k < 3; ++k) {
         if (static_cast<int>(k) != drop) {
-            x[k] = dyadic_quotient(std::move(sum[k]), denominator, s);
+            set_dyadic_quotient(x[k], sum[k], denominator, s);
         }
     }
     return x;
@@ -842,9 +902,9 @@ const FacetRegion::Projected& FacetRegion::projected() const {
     return *projected_;
 }
 
-bool FacetRegion::contains(const ExactPoint& x) const {
+bool FacetRegion::contains(ExactPoint x) const {
     const Projected& p = projected();
-    const std::vector<bool> face = containing_loops(p.loops, project(x, drop_));
+    const std::vector<bool> face = containing_loops(p.loops, project(std::move(x), drop_));
     return std::find(face.begin(), face.end(), true) != face.end() &&
            std::find(p.hole_faces.begin(), p.hole_faces.end(), face) == p.hole_faces.end();
 }
@@ -863,8 +923,8 @@ bool crosses_facet_region(const Plc& plc,
                predicates::orient3d(p, q, corner(1), corner(2)) == first &&
                predicates::orient3d(p, q, corner(2), corner(0)) == first;
     }
-    if (const auto x = plane.projected_crossing(p, q)) {
-        return region.contains(*x);
+    if (auto x = plane.projected_crossing(p, q)) {
+        return region.contains(std::move(*x));
     }
     return region.contains(plane.crossing(exact_point(p), exact_point(q)));
 }

@@ -137,6 +137,34 @@ private:
 
     const ExplicitIntegers& explicit_integers() const;
 
+    /// The integers projected_crossing works in, kept from call to call: made afresh, they were
+    /// some forty GMP allocations and frees per crossing, and a facet asks for thousands of
+    /// crossings (cheese.off: malloc and free were a tenth of the whole run). Their values mean
+    /// nothing between calls, so a copy of the plane starts with its own empty ones (copying them
+    /// was 0.2 G instructions on cheese.off, planes being copied out of of_facet).
+    struct CrossingWork {
+        using Integer = boost::multiprecision::mpz_int;
+        CrossingWork() = default;
+
+        CrossingWork(const CrossingWork& /*unused*/) {}
+
+        CrossingWork& operator=(const CrossingWork& /*unused*/) { return *this; }
+
+        ~CrossingWork() = default;
+        std::array<Integer, 3> pv;
+        std::array<Integer, 3> qv;
+        std::array<Integer, 3> segment_a;
+        std::array<Integer, 3> segment_b;
+        Integer pw;
+        Integer qw;
+        Integer parameter;
+        Integer term;
+        Integer h_p;
+        Integer h_q;
+        Integer w;
+        Integer numerator;
+    };
+
     std::array<predicates::GenericPoint3, 3> corners_;  ///< the corners that define the plane
     /// Three non-collinear input corners of the facet, and the sign relating their orientation to
     /// that of corners_ (0: the facet has no such three; side() then asks corners_). The plane is
@@ -145,6 +173,7 @@ private:
     int explicit_sign_ = 0;
     mutable std::optional<std::pair<ExactPoint, ExactPoint>> rational_;  ///< a and n, or not yet
     mutable std::optional<ExplicitIntegers> explicit_integers_;          ///< or not yet
+    mutable CrossingWork work_;
     int drop_ = 2;
 };
 
@@ -189,7 +218,9 @@ public:
     /// lies in the same face of the loops' arrangement, i.e. no hole point is inside exactly the
     /// same loops as x. Exact, in the projection that drops the plane's dropped_axis(): x's
     /// coordinate along that axis is never read, so a caller may leave it unmade.
-    bool contains(const ExactPoint& x) const;
+    /// Takes x by value: a caller done with its point moves it in, and its coordinates become the
+    /// projection's without a copy.
+    bool contains(ExactPoint x) const;
 
 private:
     struct Projected {

@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <utility>
 
 #include "box_grid.h"
 #include "cavity/core/base/error.h"
@@ -390,8 +391,8 @@ std::vector<std::string> protected_plc_violations(const Plc& plc) {
                 }
                 const ExactPoint& a = rational[e.edge[0]];
                 const ExactPoint& b = rational[e.edge[1]];
-                const ExactPoint mid{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-                if (region.contains(mid)) {
+                ExactPoint mid{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
+                if (region.contains(std::move(mid))) {
                     report.add(edge_name(plc, e.edge) + ", a side of " + facet_name(plc, *g) +
                                ", lies inside it: the two coplanar facets overlap");
                 }

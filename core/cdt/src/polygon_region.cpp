@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 #include <unordered_set>
+#include <utility>
 
 #include "cavity/core/base/error.h"
 #include "cavity/core/mesh/star.h"
@@ -206,8 +207,8 @@ bool FacetGeometry::edge_crosses_region(VertexId a, VertexId b) {
                predicates::orient3d(p, q, c[1], c[2]) == first &&
                predicates::orient3d(p, q, c[2], c[0]) == first;
     }
-    if (const auto x = plane_.projected_crossing(geometry_.generic(a), geometry_.generic(b))) {
-        return region_.contains(*x);
+    if (auto x = plane_.projected_crossing(geometry_.generic(a), geometry_.generic(b))) {
+        return region_.contains(std::move(*x));
     }
     // The offsets are kept, so the crossing a + along (b - a) needs no plane evaluation; only
     // the coordinates the region's projection keeps are made (FacetRegion::contains).
@@ -220,7 +221,7 @@ bool FacetGeometry::edge_crosses_region(VertexId a, VertexId b) {
             x[k] = pa.point[k] + along * (pb.point[k] - pa.point[k]);
         }
     }
-    return region_.contains(x);
+    return region_.contains(std::move(x));
 }
 
 namespace {
@@ -348,9 +349,9 @@ bool FacetGeometry::face_in_region_tested(std::span<const VertexId> on) {
     for (std::size_t i = 0; i < on.size(); ++i) {
         points[i] = geometry_.generic(on[i]);
     }
-    if (const auto centroid =
+    if (auto centroid =
             projected_centroid(std::span(points.data(), on.size()), plane_.dropped_axis())) {
-        return region_.contains(*centroid);
+        return region_.contains(std::move(*centroid));
     }
     // A line-plane point (or a parameter 0 / 0): the vertices' rational coordinates, kept.
     const auto drop = static_cast<std::size_t>(plane_.dropped_axis());
@@ -368,7 +369,7 @@ bool FacetGeometry::face_in_region_tested(std::span<const VertexId> on) {
             centroid[k] /= static_cast<int>(on.size());
         }
     }
-    return region_.contains(centroid);
+    return region_.contains(std::move(centroid));
 }
 
 std::uint8_t FacetGeometry::triangle_position(VertexId v) {

@@ -1347,6 +1347,37 @@ TEST(ExactPlane, IntegerCrossingIsTheRationalCrossing) {
     EXPECT_GT(tested, 500);
 }
 
+TEST(ExactPlane, CopiesCrossAsTheOriginalBeforeAndAfterUse) {
+    // projected_crossing works in integers the plane keeps from call to call; a copy gets its own
+    // (empty) ones. Copies made before and after the original's first crossing, and the original
+    // asked again after its copies, must all give crossing()'s point, for segment points whose
+    // integers are longer than the input points' (the kept integers grow, then hold short values).
+    using predicates::SegmentParameterPoint;
+    Plc plc;
+    plc.points.points = {Point3{0, 0, 0}, Point3{4, 1, 0}, Point3{1, 3, 0.5}};
+    PlcFacet facet;
+    facet.loops = {{0, 1, 2}};
+    plc.facets = {facet};
+    const auto plane = ExactPlane::of_facet(plc, plc.facets[0]);
+    ASSERT_TRUE(plane.has_value());
+    const ExactPlane before = *plane;
+    const std::array<std::pair<predicates::GenericPoint3, predicates::GenericPoint3>, 3> segments{{
+        {SegmentParameterPoint{Point3{0.1, 0.3, -7}, Point3{1e-9, 2, 3}, 1, 3}, Point3{1, 1, 9}},
+        {Point3{1, 1, 2}, Point3{2, 1, -2}},
+        {SegmentParameterPoint{Point3{-3, 0x1p-40, 5}, Point3{2, 1, -1}, 1 - 0x1p-40, 1},
+         SegmentParameterPoint{Point3{1, 1, 5}, Point3{0.5, 0x1p-30, 1}, 5, 7}},
+    }};
+    for (const auto& [p, q] : segments) {
+        EXPECT_TRUE(crossing_compared(*plane, p, q));
+    }
+    const ExactPlane after = *plane;
+    for (const ExactPlane* asked : {&before, &after, &*plane}) {
+        for (const auto& [p, q] : segments) {
+            EXPECT_TRUE(crossing_compared(*asked, p, q));
+        }
+    }
+}
+
 TEST(ExactPlane, IntegerCrossingAtAFinerScaleThanTheCorners) {
     // The plane keeps its corners and normal in integers at the corners' own scale; segments whose
     // ends have finer doubles (offsets down to 2^-48, exact in the sums) ask for a finer scale.
