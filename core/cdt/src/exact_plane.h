@@ -141,7 +141,8 @@ private:
     /// some forty GMP allocations and frees per crossing, and a facet asks for thousands of
     /// crossings (cheese.off: malloc and free were a tenth of the whole run). Their values mean
     /// nothing between calls, so a copy of the plane starts with its own empty ones (copying them
-    /// was 0.2 G instructions on cheese.off, planes being copied out of of_facet).
+    /// cost 30 M instructions on cheese.off, planes being copied out of of_facet). One plane is
+    /// therefore not for crossings on several threads at once (the CDT runs on one).
     struct CrossingWork {
         using Integer = boost::multiprecision::mpz_int;
         CrossingWork() = default;
