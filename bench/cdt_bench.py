@@ -8,8 +8,10 @@ edge in exactly two facets, no facet repeating a vertex) and to convert it to a 
 `cavity cdt` is given the original file, which it reads itself.
 
 Per model and tool (cavity cdt, cavity cdt --protect, tetgen -p, tetgen -pY), one CSV row: status
-(meshed / refused / timeout / crashed), the first line of the reason, wall seconds, Steiner points,
-tetrahedra, and `cavity check --poly` on the output. TetGen's output is checked against the PLC
+(meshed / refused / timeout / crashed), the first line of the reason, wall and CPU seconds, Steiner
+points, tetrahedra, and `cavity check --poly` on the output. A model is meshed --repeat times by
+every tool, the tools taking turns, and the row keeps every time and their median: one slow run
+of one tool must not decide a ratio of totals. TetGen's output is checked against the PLC
 it conforms to: its output points with its output boundary triangles (the .1.face file), the
 same kind of PLC that `cavity cdt` writes as PREFIX.poly.
 
@@ -21,6 +23,7 @@ import hashlib
 import io
 import os
 import re
+import resource
 import shutil
 import signal
 import struct
@@ -297,6 +300,11 @@ def collect(extra, limit_faces, include_open):
 
 # ---------------------------------------------------------------- running
 
+def child_cpu_seconds():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def run(cmd, cwd, timeout):
     """(exit status or None on timeout, wall seconds, output); the process group is ended on timeout."""
     start = time.monotonic()
@@ -353,17 +361,25 @@ def check(cavity, poly, node, ele, cwd, timeout, exact=None):
     return "INVALID: " + first_line(out)[:200], secs
 
 
+def timed(cmd, cwd, timeout):
+    """run(), with the CPU seconds of the process and its children: (status, wall, cpu, output)."""
+    before = child_cpu_seconds()
+    rc, secs, out = run(cmd, cwd, timeout)
+    return rc, secs, child_cpu_seconds() - before, out
+
+
 def run_cavity(cavity, model, protect, d, timeout):
+    """The CSV row, and the command that made the mesh (for the repeated timings)."""
     os.makedirs(d, exist_ok=True)
     cmd = [cavity, "cdt"] + (["--protect"] if protect else []) + [os.path.abspath(model), "-o", "out"]
-    rc, secs, out = run(cmd, d, timeout)
-    row = {"seconds": f"{secs:.3f}"}
+    rc, secs, cpu, out = timed(cmd, d, timeout)
+    row = {"runs": f"{secs:.3f}", "cpu_runs": f"{cpu:.3f}"}
     if rc is None:
-        return dict(row, status="timeout", reason=f"over {timeout:g} s")
+        return dict(row, status="timeout", reason=f"over {timeout:g} s"), None
     if rc != 0:
         status = "refused" if rc == 1 else f"crashed (exit {rc})"
         reason = first_line(out, ("cavity:",)).replace(os.path.abspath(model), os.path.basename(model))
-        return dict(row, status=status, reason=reason[:200])
+        return dict(row, status=status, reason=reason[:200]), None
     m = re.search(r"(\d+) points \((\d+) inserted for protection\)", out)
     k = re.search(r"(\d+) tetrahedra kept", out)
     rounding = re.search(r"(\d+) of the kept tetrahedra are inverted and (\d+) flat", out)
@@ -373,7 +389,7 @@ def run_cavity(cavity, model, protect, d, timeout):
     row["check"], row["check_seconds"] = check(cavity, "out.poly", "out.node", "out.ele", d, timeout,
                                                "out.exact")
     row["check_seconds"] = f"{row['check_seconds']:.3f}"
-    return row
+    return row, cmd
 
 
 def tetgen_check_poly(d, stem):
@@ -395,14 +411,16 @@ def tetgen_check_poly(d, stem):
 
 
 def run_tetgen(tetgen, cavity, poly, points, switches, d, timeout):
+    """The CSV row, and the command that made the mesh (for the repeated timings)."""
     os.makedirs(d, exist_ok=True)
     shutil.copy(poly, os.path.join(d, "in.poly"))
     # not quiet, line-buffered: the Debian build aborts on bad input (an uncaught int) without a word,
     # and the phase it was in and its warnings are the only clue
-    rc, secs, out = run(["stdbuf", "-oL", tetgen, switches, "in.poly"], d, timeout)
-    row = {"seconds": f"{secs:.3f}"}
+    cmd = ["stdbuf", "-oL", tetgen, switches, "in.poly"]
+    rc, secs, cpu, out = timed(cmd, d, timeout)
+    row = {"runs": f"{secs:.3f}", "cpu_runs": f"{cpu:.3f}"}
     if rc is None:
-        return dict(row, status="timeout", reason=f"over {timeout:g} s")
+        return dict(row, status="timeout", reason=f"over {timeout:g} s"), None
     ele = os.path.join(d, "in.1.ele")
     if rc != 0 or not os.path.exists(ele):
         status = "refused" if rc in (0, 1, -6, 134) else f"crashed (exit {rc})"
@@ -413,13 +431,36 @@ def run_tetgen(tetgen, cavity, poly, points, switches, d, timeout):
         drc, _, dout = run(["stdbuf", "-oL", tetgen, "-d", "in.poly"], d, timeout)
         found = [ln.strip() for ln in dout.splitlines() if ln.strip().startswith("!!") or "Found" in ln]
         reason += "; tetgen -d: " + (found[0].lstrip("! ") if found else f"reports no intersection (exit {drc})")
-        return dict(row, status=status, reason=reason.strip()[:200])
+        return dict(row, status=status, reason=reason.strip()[:200]), None
     nodes = count_header(os.path.join(d, "in.1.node"))
     row.update(status="meshed", reason="", steiner=str(nodes - points), tets=str(count_header(ele)))
     tetgen_check_poly(d, "in.1")
     row["check"], secs = check(cavity, "check.poly", "in.1.node", "in.1.ele", d, timeout)
     row["check_seconds"] = f"{secs:.3f}"
-    return row
+    return row, cmd
+
+
+def median(values):
+    """The median; of an even count, the mean of the middle two."""
+    v = sorted(values)
+    h = len(v) // 2
+    return v[h] if len(v) % 2 else (v[h - 1] + v[h]) / 2
+
+
+def retime(row, cmd, d, timeout):
+    """One more timed run of the command that meshed; a run that no longer meshes is reported."""
+    rc, secs, cpu, _ = timed(cmd, d, timeout)
+    row["runs"] += f";{secs:.3f}"
+    row["cpu_runs"] += f";{cpu:.3f}"
+    if rc != 0:
+        print(f"cdt_bench: warning: a repeated run of {' '.join(cmd)} in {d} ended with status {rc}",
+              file=sys.stderr)
+
+
+def settle(row):
+    """The row's seconds and cpu_seconds: the medians of its runs."""
+    for key, runs in (("seconds", "runs"), ("cpu_seconds", "cpu_runs")):
+        row[key] = f"{median(float(t) for t in row[runs].split(';')):.3f}"
 
 
 # ---------------------------------------------------------------- report
@@ -439,6 +480,16 @@ def fmt_row(r):
     return f"{r['status']}: {reason}"
 
 
+def round_spread(by, models, a, b):
+    """How the ratio of total wall times of tools a and b varies over the rounds of repeated runs."""
+    runs = [[[float(t) for t in by[(m, tool)]["runs"].split(";")] for m in models] for tool in (a, b)]
+    rounds = min(len(r) for per_tool in runs for r in per_tool)
+    if rounds < 2:
+        return ""
+    ratios = sorted(sum(r[k] for r in runs[0]) / sum(r[k] for r in runs[1]) for k in range(rounds))
+    return f"; round by round, from {ratios[0]:.2f} to {ratios[-1]:.2f}"
+
+
 def report(rows, models, args, elapsed, load):
     run_names = [m[0] for m in models if m[3] is not None]
     skipped = [m for m in models if m[3] is None]
@@ -454,7 +505,9 @@ def report(rows, models, args, elapsed, load):
       f"(every edge in exactly two facets)"
       + (f" and models over {args.max_faces} facets" if args.max_faces else "")
       + f" are left out (listed below). `cavity cdt` reads each file itself; TetGen {tetgen_version()} gets the "
-      f"script's conversion to `.poly`. Time limit {args.timeout:g} s per run; wall times on a shared "
+      f"script's conversion to `.poly`. Time limit {args.timeout:g} s per run. Each tool meshed each model "
+      f"it meshes {args.repeat} time{'s' if args.repeat > 1 else ''}, the tools taking turns; the times "
+      f"are the medians of those runs, wall and CPU (user + system) seconds of the process, on a "
       f"2-core machine (load average at the start: {load}). The whole run took {elapsed:.0f} s.\n")
     p("Steiner points: for cavity, the points it inserted for edge protection (its summary line); for "
       "TetGen, points in its `.node` output minus points in the `.poly`. Tetrahedra: of the carved "
@@ -495,8 +548,11 @@ def report(rows, models, args, elapsed, load):
         sb = sum(int(by[(m, b)]["steiner"]) for m in both)
         ta = sum(float(by[(m, a)]["seconds"]) for m in both)
         tb = sum(float(by[(m, b)]["seconds"]) for m in both)
+        ca = sum(float(by[(m, a)]["cpu_seconds"]) for m in both)
+        cb = sum(float(by[(m, b)]["cpu_seconds"]) for m in both)
         p(f"- On the {len(both)} models both `{a}` and `{b}` mesh: Steiner points {sa} against {sb}; "
-          f"total wall time {ta:.2f} s against {tb:.2f} s (ratio {ta / tb:.2f}).")
+          f"total wall time {ta:.2f} s against {tb:.2f} s (ratio {ta / tb:.2f}{round_spread(by, both, a, b)}); "
+          f"CPU time {ca:.2f} s against {cb:.2f} s (ratio {ca / cb:.2f}).")
         # TetGen recovers segments by flips and may stop short of a constrained Delaunay mesh; the
         # Steiner points of meshes that are one compare like with like.
         valid = [m for m in both if by[(m, a)]["check"] == "valid" and by[(m, b)]["check"] == "valid"]
@@ -517,7 +573,7 @@ def report(rows, models, args, elapsed, load):
         for why, n in reasons.most_common(8):
             p(f"- {n} × {why}")
     p("\n## Per model\n")
-    p("Each cell: wall seconds, +Steiner points, tetrahedra, validation; or the status and the first "
+    p("Each cell: median wall seconds, +Steiner points, tetrahedra, validation; or the status and the first "
       "line of the reason.\n")
     p("| model | facets | " + " | ".join(f"`{t}`" for t in TOOLS) + " |")
     p("|---|---" + "|---" * len(TOOLS) + "|")
@@ -559,6 +615,9 @@ def main():
     ap.add_argument("--tetgen", default="/usr/bin/tetgen", help="the TetGen binary")
     ap.add_argument("--out", default="results/cdt", help="where cdt.csv and README.md are written")
     ap.add_argument("--keep", action="store_true", help="keep the work directory (printed) with every output")
+    ap.add_argument("--repeat", type=int, default=5,
+                    help="times each tool meshes each model it meshes, the tools taking turns; the "
+                         "report gives the medians (default 5)")
     args = ap.parse_args()
     args.passed = sys.argv[1:]
     if args.cavity == ap.get_default("cavity") and "--cavity" in args.passed:  # as the wrapper passes it
@@ -573,6 +632,8 @@ def main():
             sys.exit(f"cdt_bench: {b} is not an executable (build cavity, install tetgen: bench/run_cdt_bench.sh)")
     if not os.path.exists(CGAL_DATA) and not os.path.isdir(OPENSCAD_DATA) and not args.models:
         sys.exit("cdt_bench: no models: install libcgal-demo and openscad-testing-data, or give --models")
+    if args.repeat < 1:
+        ap.error("--repeat must be at least 1")
     args.cavity = os.path.abspath(args.cavity)
     load = os.getloadavg()
     load = f"{load[0]:.1f}"
@@ -587,23 +648,33 @@ def main():
     rows = []
     for k, (name, path, nf, (poly, points), _) in enumerate(runnable):
         base = os.path.join(work, "run", f"{k:03d}")
+        made = []
         for tool in tools:
             d = os.path.join(base, tool.replace(" ", "").replace("-", "_"))
             if tool.startswith("cavity"):
-                r = run_cavity(args.cavity, path, "--protect" in tool, d, args.timeout)
+                r, cmd = run_cavity(args.cavity, path, "--protect" in tool, d, args.timeout)
             else:
-                r = run_tetgen(args.tetgen, args.cavity, poly, points, tool.split()[1].lstrip("-"), d,
-                               args.timeout)
+                r, cmd = run_tetgen(args.tetgen, args.cavity, poly, points, tool.split()[1].lstrip("-"), d,
+                                    args.timeout)
             r.update(model=name, facets=nf, points=points, tool=tool)
             rows.append(r)
+            made.append((r, cmd, d))
+        # The tools take turns round by round, so a slow spell of the machine falls on all of them.
+        for _ in range(args.repeat - 1):
+            for r, cmd, d in made:
+                if cmd is not None:
+                    retime(r, cmd, d, args.timeout)
+        for r, _, _ in made:
+            settle(r)
+            tool = r["tool"]
             print(f"[{k + 1}/{len(runnable)}] {name} {tool}: {r['status']} {r['seconds']} s "
                   f"{r.get('check', '')} {r.get('reason', '')[:100]}", file=sys.stderr, flush=True)
         if not args.keep:
             shutil.rmtree(base, ignore_errors=True)
     elapsed = time.monotonic() - start
     os.makedirs(args.out, exist_ok=True)
-    fields = ["model", "facets", "points", "tool", "status", "reason", "seconds", "steiner", "tets",
-              "check", "check_seconds", "rounded_bad"]
+    fields = ["model", "facets", "points", "tool", "status", "reason", "seconds", "cpu_seconds", "steiner",
+              "tets", "check", "check_seconds", "rounded_bad", "runs", "cpu_runs"]
     with open(os.path.join(args.out, "cdt.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields, restval="")
         w.writeheader()
