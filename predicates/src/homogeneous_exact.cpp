@@ -1,7 +1,6 @@
 #include "homogeneous_exact.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <tuple>
 
@@ -90,18 +89,6 @@ int determinant_sign(const Entries<N>& m, mp_bitcnt_t entry_bits) {
         }
     }
     return mpz_sgn(minor[kMasks - 1]);
-}
-
-/// out = factor * x * 2^-scale, for scale <= spacing_exponent(x): one product by x's mantissa
-/// and one shift, in place.
-void set_scaled_product(mpz_ptr out, mpz_srcptr factor, double x, int scale) {
-    if (x == 0.0) {
-        mpz_set_ui(out, 0);
-        return;
-    }
-    const int k = spacing_exponent(x);
-    mpz_mul_si(out, factor, static_cast<long>(std::ldexp(x, -k)));  // |mantissa| < 2^53
-    mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(k - scale));
 }
 
 }  // namespace

@@ -680,22 +680,12 @@ mpz_srcptr raw(const Integer& x) {
     return x.backend().data();
 }
 
-/// out = x * 2^-scale (scaled() in place), for scale <= spacing_exponent(x) or x == 0: an
-/// integer that already has the room allocates nothing.
-void set_scaled(Integer& out, double x, int scale) {
-    if (x == 0.0) {
-        mpz_set_ui(raw(out), 0);
-        return;
-    }
-    const int k = predicates::spacing_exponent(x);
-    mpz_set_si(raw(out), static_cast<long>(std::ldexp(x, -k)));  // |mantissa| < 2^53
-    mpz_mul_2exp(raw(out), raw(out), static_cast<mp_bitcnt_t>(k - scale));
-}
-
+/// out = p * 2^-scale (scaled() in place), for scale <= the spacing exponent of every
+/// nonzero coordinate: integers that already have the room allocate nothing.
 void set_scaled(std::array<Integer, 3>& out, const Point3& p, int scale) {
-    set_scaled(out[0], p.x, scale);
-    set_scaled(out[1], p.y, scale);
-    set_scaled(out[2], p.z, scale);
+    predicates::set_scaled(raw(out[0]), p.x, scale);
+    predicates::set_scaled(raw(out[1]), p.y, scale);
+    predicates::set_scaled(raw(out[2]), p.z, scale);
 }
 
 /// The integers `homogeneous` works in: a segment's ends and its parameter's numerator.
@@ -731,8 +721,8 @@ bool homogeneous(const predicates::GenericPoint3& g,
     std::array<Integer, 3>& b = work.b;
     set_scaled(a, sp->a, s);
     set_scaled(b, sp->b, s);
-    set_scaled(work.n, sp->numerator, r);
-    set_scaled(w, sp->denominator, r);
+    predicates::set_scaled(raw(work.n), sp->numerator, r);
+    predicates::set_scaled(raw(w), sp->denominator, r);
     for (std::size_t k = 0; k < 3; ++k) {
         // v = a d + n (b - a), with b - a formed in b's place.
         mpz_sub(raw(b[k]), raw(b[k]), raw(a[k]));
