@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
-#include <unordered_set>
 #include <utility>
 
 #include "cavity/core/base/error.h"
+#include "cavity/core/base/id_hash_map.h"
 #include "cavity/core/mesh/star.h"
 #include "cavity/predicates/generic_predicates.h"
 #include "segment_interior.h"
@@ -21,7 +21,8 @@ namespace {
 TetId search_star(
     const ArrayStorage& storage, TetId start, VertexId u, VertexId v, std::uint64_t& steps) {
     std::vector<TetId> queue{start};
-    std::unordered_set<TetId> seen{start};
+    IdHashSet seen;
+    seen.insert(start);
     for (std::size_t k = 0; k < queue.size(); ++k) {
         const TetId t = queue[k];
         ++steps;
@@ -34,7 +35,7 @@ TetId search_star(
                 continue;  // the facet opposite u leaves the star
             }
             const HalfFacet h = storage.adjacent(t, f);
-            if (h != kNoHalfFacet && seen.insert(tet_of(h)).second) {
+            if (h != kNoHalfFacet && seen.insert(tet_of(h))) {
                 queue.push_back(tet_of(h));
             }
         }
@@ -57,14 +58,14 @@ TetId tet_with_edge(const ArrayStorage& storage,
     if (start == kNoTet) {
         return kNoTet;
     }
-    std::unordered_set<TetId> seen;
+    IdHashSet seen;
     TetId t = start;
     if (is_ghost(storage.vertices(t))) {
         // The solid tetrahedron behind the ghost's hull triangle also has u.
         const HalfFacet behind = storage.adjacent(t, 3);
         t = behind == kNoHalfFacet ? t : tet_of(behind);
     }
-    while (!is_ghost(storage.vertices(t)) && seen.insert(t).second) {
+    while (!is_ghost(storage.vertices(t)) && seen.insert(t)) {
         ++steps;
         const TetVertices& w = storage.vertices(t);
         if (slot_of(w, v) >= 0) {
@@ -166,11 +167,11 @@ const FacetGeometry::Placed& FacetGeometry::placed(VertexId v) {
 }
 
 int FacetGeometry::side(VertexId v) {
-    auto it = vertex_sides_.find(v);
-    if (it == vertex_sides_.end()) {
-        it = vertex_sides_.emplace(v, predicates::to_int(plane_.side(geometry_.generic(v)))).first;
+    const auto [side, unknown] = vertex_sides_.try_emplace(v);
+    if (unknown) {
+        *side = static_cast<std::int8_t>(predicates::to_int(plane_.side(geometry_.generic(v))));
     }
-    return it->second;
+    return *side;
 }
 
 Rational FacetGeometry::speed(VertexId v) {
@@ -469,12 +470,12 @@ std::optional<bool> FacetGeometry::face_in_triangle(std::span<const VertexId> on
 PolygonRegion find_polygon_region(const ArrayStorage& storage, FacetGeometry& facet) {
     using Contact = FacetGeometry::Contact;
     PolygonRegion region;
-    std::unordered_set<TetId> tested;
+    IdHashSet tested;
     std::vector<TetId> stack;
     // Tests t once; a touching or crossing t joins its list and waits on the stack for its
     // neighbours to be tested.
     const auto test = [&](TetId t) {
-        if (!tested.insert(t).second) {
+        if (!tested.insert(t)) {
             return;
         }
         const Contact c = facet.contact(storage.vertices(t));

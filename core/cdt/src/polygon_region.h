@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "cavity/core/base/id_hash_map.h"
 #include "cavity/core/geometry/geometry.h"
 #include "cavity/core/input/plc.h"
 #include "cavity/core/mesh/array_storage.h"
@@ -109,7 +110,7 @@ private:
     const Placed& placed(VertexId v);
 
     /// side(v) by the exact orient3d predicate, whose filters decide most signs in doubles.
-    std::unordered_map<VertexId, int> vertex_sides_;
+    IdHashMap<std::int8_t> vertex_sides_;
     std::map<VertexId, Placed> placed_;
 
     /// What is known of the region at the relative interior of a piece of h, keyed by the sorted
