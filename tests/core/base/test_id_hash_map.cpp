@@ -12,7 +12,7 @@ namespace {
 
 // The same answers as std::unordered_map through growth from empty to thousands of entries: ids
 // from narrow ranges (many repeats, long probe runs among consecutive ids) and from the whole
-// 32-bit range up to kEmpty - 1 (which is kGhostVertex's neighbour and a valid key).
+// 32-bit range below kEmpty, with kGhostVertex (0xFFFFFFFE, kEmpty - 1), a valid key, among them.
 TEST(IdHashMap, AgreesWithUnorderedMap) {
     Random random(11);
     for (int trial = 0; trial < 60; ++trial) {

@@ -34,8 +34,8 @@ Box random_box(Random& random, double size) {
                   z + size * uniform(random));
 }
 
-// Every item whose closed box meets the query's is returned, once; small and long items mixed
-// (long ones land on coarse levels), queries of every size, boxes touching at a face included.
+// Every item whose closed box meets the query's is returned, once: small and long items mixed
+// (long ones land on coarse levels), queries of every size, and boxes meeting at a corner only.
 TEST(BoxGrid, ReturnsEveryItemItsQueryMeetsOnce) {
     Random random(5);
     for (int trial = 0; trial < 20; ++trial) {
