@@ -20,7 +20,6 @@ TEST(IdHashMap, AgreesWithUnorderedMap) {
             trial % 3 == 0 ? 0xFFFF'FFFFull : 1 + random.below(trial < 30 ? 64 : 20000);
         IdHashMap<int> map;
         std::unordered_map<std::uint32_t, int> oracle;
-        EXPECT_EQ(map.find(5), nullptr);
         EXPECT_FALSE(map.contains(5));
         const std::size_t n = random.below(5000);
         for (std::size_t i = 0; i < n; ++i) {
@@ -37,8 +36,9 @@ TEST(IdHashMap, AgreesWithUnorderedMap) {
         }
         ASSERT_EQ(map.size(), oracle.size());
         for (const auto& [id, count] : oracle) {
-            const int* value = map.find(id);
-            ASSERT_NE(value, nullptr) << "id " << id;
+            ASSERT_TRUE(map.contains(id)) << "id " << id;
+            const auto [value, inserted] = map.try_emplace(id);
+            EXPECT_FALSE(inserted) << "id " << id;
             EXPECT_EQ(*value, count) << "id " << id;
         }
     }

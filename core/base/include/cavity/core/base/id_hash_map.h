@@ -15,7 +15,8 @@ namespace cavity::core {
 /// two flat arrays, at most half full. The std::unordered_ containers it replaces made and freed a
 /// node per entry (1.65 million on one CDT of cheese.off, where the entries are a few dozen per
 /// polygon). Every id but kEmpty (0xFFFFFFFF, which is kNoTet and no vertex) can be a key; entries
-/// are never erased. Growing moves the values: pointers from find() last until the next insertion.
+/// are never erased. Growing moves the values: a pointer from try_emplace() lasts until the next
+/// insertion.
 template <class Value>
 class IdHashMap {
 public:
@@ -38,19 +39,6 @@ public:
             k = (k + 1) & (keys_.size() - 1);
         }
         return {&values_[k], false};
-    }
-
-    /// The value of `id`, or nullptr.
-    Value* find(std::uint32_t id) {
-        if (size_ == 0) {
-            return nullptr;
-        }
-        for (std::size_t k = slot(id); keys_[k] != kEmpty; k = (k + 1) & (keys_.size() - 1)) {
-            if (keys_[k] == id) {
-                return &values_[k];
-            }
-        }
-        return nullptr;
     }
 
     bool contains(std::uint32_t id) const {
