@@ -22,7 +22,7 @@ std::optional<Verdict> insphere_adaptive(const std::array<Point3, 5>& p) {
     if (const std::optional<Sign> s = insphere_permanent(rows, permanent)) {
         return Verdict{*s, Stage::kAdaptive};
     }
-    return lifted_adaptive(rows, permanent);
+    return lifted_adaptive(rows, permanent, p);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "cavity/predicates/detail/expansion.h"
 #include "double_double.h"
 #include "fused_products.h"
+#include "scaled_integers.h"
 #include "small_expansion.h"
 #include "small_integers.h"
 
@@ -320,13 +321,25 @@ std::optional<Sign> lifted_double_double(const LiftedRows& r, double permanent) 
     return std::nullopt;
 }
 
-std::optional<Verdict> lifted_adaptive(const LiftedRows& rows, double permanent) {
+namespace {
+
+/// lifted_adaptive's stages; with `points` (insphere's query), every stage that would evaluate
+/// the exact determinant of the differences (B when they are exact, D) first tries the scaled
+/// integers, which give the same sign at the same stage.
+std::optional<Verdict> adaptive_stages(const LiftedRows& rows,
+                                       double permanent,
+                                       const std::array<Point3, 5>* points) {
     // The double-double stage: almost every in-range query the filter leaves, at a fraction of
     // the cost of stage B's exact expansion.
     if (const std::optional<Sign> s = lifted_double_double(rows, permanent)) {
         return Verdict{*s, Stage::kAdaptive};
     }
-    // Stage B.
+    // Stage B: exact already when the differences are.
+    if (rows.differences_exact && points != nullptr) {
+        if (const std::optional<Sign> s = insphere_scaled_integers(*points)) {
+            return Verdict{*s, Stage::kAdaptive};
+        }
+    }
     SmallExpansion det;
     if (!lifted_determinant(rows, false, det)) {
         return std::nullopt;
@@ -344,11 +357,28 @@ std::optional<Verdict> lifted_adaptive(const LiftedRows& rows, double permanent)
                        Stage::kAdaptive};
     }
     // Stage D.
+    if (points != nullptr) {
+        if (const std::optional<Sign> s = insphere_scaled_integers(*points)) {
+            return Verdict{*s, Stage::kExact};
+        }
+    }
     SmallExpansion exact;
     if (!lifted_determinant(rows, true, exact)) {
         return std::nullopt;
     }
     return Verdict{static_cast<Sign>(sign(exact)), Stage::kExact};
+}
+
+}  // namespace
+
+std::optional<Verdict> lifted_adaptive(const LiftedRows& rows, double permanent) {
+    return adaptive_stages(rows, permanent, nullptr);
+}
+
+std::optional<Verdict> lifted_adaptive(const LiftedRows& rows,
+                                       double permanent,
+                                       const std::array<Point3, 5>& points) {
+    return adaptive_stages(rows, permanent, &points);
 }
 
 }  // namespace cavity::predicates::detail

@@ -77,6 +77,13 @@ DoubleDouble lifted_double_double_determinant(const LiftedRows& rows, ProductKin
 /// inputs in kLiftedAdaptiveWindow.
 std::optional<Verdict> lifted_adaptive(const LiftedRows& rows, double permanent);
 
+/// The same for insphere's rows of `points` (insphere_rows): where a stage evaluates the exact
+/// determinant (B of exact differences, D), the scaled integers (scaled_integers.h) are tried
+/// first, with the same verdict at the same stage and several times faster.
+std::optional<Verdict> lifted_adaptive(const LiftedRows& rows,
+                                       double permanent,
+                                       const std::array<Point3, 5>& points);
+
 /// The exact sign when the points are integers below 2^50 (checked by the caller; the rows are
 /// then exact differences) with coordinate differences of at most 2^16; none otherwise.
 std::optional<Sign> lifted_small_integers(const LiftedRows& rows);
