@@ -243,9 +243,9 @@ std::optional<Sign> insphere_scaled_integers(const std::array<Point3, 5>& p) {
 
 // Scaling. The defining doubles (explicit points, segment ends) span at most 61 bits above their
 // least low E, so each is an integer A 2^E with |A| < 2^61. A segment point with parameter
-// t = T 2^tau has coordinates A + t (B - A) = 2^(E + tau) (A 2^-tau + T (B - A)) (for tau < 0),
-// so with S = E + min(0, least tau) every coordinate is an integer times 2^S: explicit ones
-// A 2^(E - S), segment ones A 2^(E - S) + T (B - A) 2^(tau + E - S), both shifts at least 0.
+// t = T 2^tau (T an odd integer below 2^53) has coordinates 2^E (A + t (B - A)), so with
+// S = E + min(0, least tau) every coordinate is an integer times 2^S: an explicit one A 2^(E - S),
+// a segment point's A 2^(E - S) + T (B - A) 2^(tau + E - S), both shifts at least 0.
 // Each is formed in 128 bits only while its bit length stays below kWideScaledIntegerBits, so
 // |X| < 2^124 and every difference is below 2^125: lifted_sign's bound for two limbs.
 std::optional<Sign> insphere_scaled_integers(const std::array<const GenericPoint3*, 5>& g) {
