@@ -17,6 +17,7 @@
 
 #include "cavity/predicates/detail/expansion.h"
 #include "cavity/predicates/oracle.h"
+#include "cospherical_queries.h"
 #include "lifted_adaptive.h"
 
 namespace cavity::predicates::detail {
@@ -87,40 +88,16 @@ TEST(InspherePermanent, NearbyPointsOnASphereAgreeWithTheOracle) {
 // Exactly cospherical integer points (x^2 + y^2 + z^2 = 9^2 + ... about an integer centre), and
 // the same with a few coordinates moved 1-4 ulps, at scales 2^k that keep them in the window.
 TEST(InspherePermanent, CosphericalIntegerPointsAgreeWithTheOracle) {
-    const std::array<Point3, 12> sphere = {{{9, 0, 0},
-                                            {-9, 0, 0},
-                                            {0, 9, 0},
-                                            {0, -9, 0},
-                                            {0, 0, 9},
-                                            {0, 0, -9},
-                                            {1, 4, 8},
-                                            {-4, 8, 1},
-                                            {8, -1, -4},
-                                            {4, -8, 1},
-                                            {-8, 1, 4},
-                                            {-1, -4, -8}}};
     std::mt19937_64 rng(7302);
-    std::uniform_int_distribution<int> pick(0, 11), centre(-1000, 1000), coin(0, 1), step(1, 4);
+    std::uniform_int_distribution<int> centre(-1000, 1000);
     Tally exact_zero;
     Tally moved;
     for (const int scale : {-130, 0, 150}) {
         for (int i = 0; i < 20000; ++i) {
             const double ox = centre(rng), oy = centre(rng), oz = centre(rng);
-            Query q{};
-            for (Point3& p : q) {
-                const Point3& s = sphere[static_cast<std::size_t>(pick(rng))];
-                p = {std::ldexp(s.x + ox, scale),
-                     std::ldexp(s.y + oy, scale),
-                     std::ldexp(s.z + oz, scale)};
-            }
+            Query q = testing::cospherical_query(rng, ox, oy, oz, scale);
             check(q, exact_zero);
-            for (Point3& p : q) {
-                if (coin(rng) == 0) {
-                    for (int k = step(rng); k > 0; --k) {
-                        p.x = std::nextafter(p.x, coin(rng) == 0 ? INFINITY : -INFINITY);
-                    }
-                }
-            }
+            testing::move_a_few_ulps(q, rng);
             check(q, moved);
         }
     }

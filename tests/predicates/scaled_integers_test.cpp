@@ -17,6 +17,7 @@
 
 #include "cavity/predicates/insphere.h"
 #include "cavity/predicates/oracle.h"
+#include "cospherical_queries.h"
 
 namespace cavity::predicates::detail {
 namespace {
@@ -47,26 +48,12 @@ void check(const Query& q, Tally& tally) {
     }
 }
 
-// Twelve integer points at distance 9 from the origin.
-constexpr std::array<Point3, 12> kSphere = {{{9, 0, 0},
-                                             {-9, 0, 0},
-                                             {0, 9, 0},
-                                             {0, -9, 0},
-                                             {0, 0, 9},
-                                             {0, 0, -9},
-                                             {1, 4, 8},
-                                             {-4, 8, 1},
-                                             {8, -1, -4},
-                                             {4, -8, 1},
-                                             {-8, 1, 4},
-                                             {-1, -4, -8}}};
-
-// The sphere's points times 2^scale about a centre with up to 40 significant bits: fractional,
-// exactly cospherical coordinates whose differences are exact (the expansion stage B's inputs),
-// and the same with coordinates moved 1-4 ulps (their differences are then inexact: stage D).
+// Five of twelve points at distance 9 (cospherical_queries.h), times 2^scale about a centre with up
+// to 40 significant bits: fractional, exactly cospherical coordinates whose differences are exact
+// (the expansion stage B's inputs), and the same with coordinates moved 1-4 ulps (their differences
+// are then inexact: stage D).
 TEST(ScaledIntegers, CosphericalFractionalPointsAgreeWithTheOracle) {
     std::mt19937_64 rng(8101);
-    std::uniform_int_distribution<int> pick(0, 11), coin(0, 1), step(1, 4);
     std::uniform_int_distribution<std::int64_t> centre(-(std::int64_t{1} << 40),
                                                        std::int64_t{1} << 40);
     Tally exact_zero;
@@ -76,21 +63,9 @@ TEST(ScaledIntegers, CosphericalFractionalPointsAgreeWithTheOracle) {
             const double ox = static_cast<double>(centre(rng));
             const double oy = static_cast<double>(centre(rng));
             const double oz = static_cast<double>(centre(rng));
-            Query q{};
-            for (Point3& p : q) {
-                const Point3& s = kSphere[static_cast<std::size_t>(pick(rng))];
-                p = {std::ldexp(s.x + ox, scale),
-                     std::ldexp(s.y + oy, scale),
-                     std::ldexp(s.z + oz, scale)};
-            }
+            Query q = testing::cospherical_query(rng, ox, oy, oz, scale);
             check(q, exact_zero);
-            for (Point3& p : q) {
-                if (coin(rng) == 0) {
-                    for (int k = step(rng); k > 0; --k) {
-                        p.x = std::nextafter(p.x, coin(rng) == 0 ? INFINITY : -INFINITY);
-                    }
-                }
-            }
+            testing::move_a_few_ulps(q, rng);
             check(q, moved);
         }
     }
