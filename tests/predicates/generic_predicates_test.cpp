@@ -415,7 +415,7 @@ TEST(GenericPredicates, AgreeWithTheOracleNearDegeneracies) {
 
 /// The scaled integers (scaled_integers.h) on generic queries: the cospherical configurations
 /// through a segment point at parameter 1/4, as given and nudged, and random mixes of explicit
-/// points and segment points at dyadic parameters (k / 2^j, |k| < 2^20, j < 48) in a moderate
+/// points and segment points at dyadic parameters (k / 2^j, |k| <= 2^20, j < 48) in a moderate
 /// exponent band. Wherever they answer they agree with the oracle, and they answer most of these;
 /// line-plane points and non-dyadic parameters they leave to the GMP stage.
 TEST(GenericPredicates, ScaledIntegersAgreeWithTheOracle) {
