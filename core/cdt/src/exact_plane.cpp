@@ -822,6 +822,14 @@ std::optional<ExactPoint> ExactPlane::projected_crossing(const predicates::Gener
     return x;
 }
 
+std::optional<RoundedPoint2> ExactPlane::rounded_crossing(const predicates::RoundedPoint& p,
+                                                          const predicates::RoundedPoint& q) const {
+    if (explicit_sign_ == 0) {
+        return std::nullopt;
+    }
+    return core::rounded_crossing(explicit_, drop_, p, q);
+}
+
 std::optional<ExactPoint> projected_centroid(std::span<const predicates::GenericPoint3> points,
                                              int drop) {
     int s = std::numeric_limits<int>::max();
@@ -897,6 +905,45 @@ bool FacetRegion::contains(ExactPoint x) const {
     const std::vector<bool> face = containing_loops(p.loops, project(std::move(x), drop_));
     return std::find(face.begin(), face.end(), true) != face.end() &&
            std::find(p.hole_faces.begin(), p.hole_faces.end(), face) == p.hole_faces.end();
+}
+
+const std::vector<std::vector<RoundedPoint2>>& FacetRegion::rounded_loops() const {
+    if (!rounded_loops_) {
+        std::vector<std::vector<RoundedPoint2>> made;
+        for (const auto& loop : facet_.loops) {
+            auto rounded = rounded_loop(plc_, loop, drop_);
+            if (!rounded) {
+                made.clear();
+                break;
+            }
+            made.push_back(std::move(*rounded));
+        }
+        rounded_loops_.emplace(std::move(made));
+    }
+    return *rounded_loops_;
+}
+
+std::optional<bool> FacetRegion::contains_rounded(const RoundedPoint2& x) const {
+    const auto& loops = rounded_loops();
+    if (loops.empty()) {
+        return std::nullopt;
+    }
+    std::vector<bool> face(loops.size());
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+        const std::optional<bool> inside = inside_loop_rounded(loops[i], x);
+        if (!inside) {
+            return std::nullopt;
+        }
+        face[i] = *inside;
+    }
+    if (std::find(face.begin(), face.end(), true) == face.end()) {
+        return false;
+    }
+    if (facet_.holes.empty()) {
+        return true;
+    }
+    const auto& holes = projected().hole_faces;
+    return std::find(holes.begin(), holes.end(), face) == holes.end();
 }
 
 bool crosses_facet_region(const Plc& plc,

@@ -15,8 +15,10 @@
 #include <boost/multiprecision/gmp.hpp>
 
 #include "cavity/core/input/plc.h"
+#include "cavity/predicates/generic_filter.h"
 #include "cavity/predicates/generic_point.h"
 #include "cavity/predicates/sign.h"
+#include "rounded_region.h"
 
 namespace cavity::core {
 
@@ -108,6 +110,11 @@ public:
     /// point. Each rational point and offset cost more than the region test itself.
     std::optional<ExactPoint> projected_crossing(const predicates::GenericPoint3& p,
                                                  const predicates::GenericPoint3& q) const;
+    /// The same crossing in doubles, projected, within a proven distance of the exact one
+    /// (rounded_region.h), from p's and q's rounded points: nullopt when the facet has no three
+    /// input corners or the floating-point stage cannot bound it tightly.
+    std::optional<RoundedPoint2> rounded_crossing(const predicates::RoundedPoint& p,
+                                                  const predicates::RoundedPoint& q) const;
 
     /// The coordinate dropped to project the plane one-to-one onto a coordinate plane: an axis
     /// whose normal component is not zero (exactly), the largest by a floating-point estimate.
@@ -222,6 +229,10 @@ public:
     /// Takes x by value: a caller done with its point moves it in, and its coordinates become the
     /// projection's without a copy.
     bool contains(ExactPoint x) const;
+    /// contains() of the exact point near x (rounded_region.h), when the doubles decide every
+    /// step of the test; nullopt otherwise. The loops are taken in doubles, made on the first
+    /// call without a rational; a facet with hole points makes the exact ones too, for them.
+    std::optional<bool> contains_rounded(const RoundedPoint2& x) const;
 
 private:
     struct Projected {
@@ -231,11 +242,15 @@ private:
 
     const Projected& projected() const;
 
+    /// The loops in doubles for contains_rounded (empty when a corner's rounding is unbounded).
+    const std::vector<std::vector<RoundedPoint2>>& rounded_loops() const;
+
     const Plc& plc_;
     const PlcFacet& facet_;
     int drop_;
     RationalPoints* rational_;
-    mutable std::optional<Projected> projected_;  ///< or not yet
+    mutable std::optional<Projected> projected_;                                    ///< or not yet
+    mutable std::optional<std::vector<std::vector<RoundedPoint2>>> rounded_loops_;  ///< or not yet
 };
 
 /// True when segment pq, whose ends lie strictly on opposite sides of the facet's plane, crosses

@@ -208,6 +208,11 @@ bool FacetGeometry::edge_crosses_region(VertexId a, VertexId b) {
                predicates::orient3d(p, q, c[1], c[2]) == first &&
                predicates::orient3d(p, q, c[2], c[0]) == first;
     }
+    if (const auto x = plane_.rounded_crossing(geometry_.rounded(a), geometry_.rounded(b))) {
+        if (const std::optional<bool> inside = region_.contains_rounded(*x)) {
+            return *inside;
+        }
+    }
     if (auto x = plane_.projected_crossing(geometry_.generic(a), geometry_.generic(b))) {
         return region_.contains(std::move(*x));
     }
@@ -345,13 +350,26 @@ bool FacetGeometry::face_in_region_tested(std::span<const VertexId> on) {
             return *inside;
         }
     }
+    // A face on h has one to three vertices (the bound also shows the compiler the arrays hold
+    // them).
+    const std::size_t count = std::min<std::size_t>(on.size(), 3);
+    // The centroid in doubles first: the exact one costs a rational per coordinate.
+    std::array<predicates::RoundedPoint, 3> rounded;
+    for (std::size_t i = 0; i < count; ++i) {
+        rounded[i] = geometry_.rounded(on[i]);
+    }
+    if (const auto c = rounded_centroid(std::span(rounded.data(), count), plane_.dropped_axis())) {
+        if (const std::optional<bool> inside = region_.contains_rounded(*c)) {
+            return *inside;
+        }
+    }
     // Only the coordinates the region's projection keeps (FacetRegion::contains).
     std::array<predicates::GenericPoint3, 3> points;
-    for (std::size_t i = 0; i < on.size(); ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
         points[i] = geometry_.generic(on[i]);
     }
     if (auto centroid =
-            projected_centroid(std::span(points.data(), on.size()), plane_.dropped_axis())) {
+            projected_centroid(std::span(points.data(), count), plane_.dropped_axis())) {
         return region_.contains(std::move(*centroid));
     }
     // A line-plane point (or a parameter 0 / 0): the vertices' rational coordinates, kept.

@@ -114,19 +114,36 @@ inline int rounded_sign(double det, double bound) {
 
 }  // namespace detail
 
+/// A determinant evaluated on rounded points and a bound on its distance to the exact points'.
+struct RoundedValue {
+    double value;
+    double bound;
+};
+
+/// orient3d's determinant (orient3d.h's convention) on the rounded points, within `bound` of its
+/// value on the exact points; nullopt outside the range the bound is proven for. For a caller
+/// that needs the magnitude as well as the sign (a crossing point's parameter, the ratio of two
+/// such determinants).
+inline std::optional<RoundedValue> orient3d_rounded_value(const RoundedPoint& a,
+                                                          const RoundedPoint& b,
+                                                          const RoundedPoint& c,
+                                                          const RoundedPoint& d) {
+    const auto q = detail::rounded_rows(d, a, b, c);
+    if (!detail::in_rounded_range(q.m)) {
+        return std::nullopt;
+    }
+    return RoundedValue{
+        detail::orient3d_rows_determinant(q.v[0], q.v[1], q.v[2]),
+        19.0 * q.eta * (q.big_m * q.big_m) + 31.0 * detail::kUnitRoundoff * (q.m * q.m * q.m)};
+}
+
 /// The sign of orient3d (orient3d.h's convention) on the exact points, or 0 when undecided.
 inline int orient3d_rounded(const RoundedPoint& a,
                             const RoundedPoint& b,
                             const RoundedPoint& c,
                             const RoundedPoint& d) {
-    const auto q = detail::rounded_rows(d, a, b, c);
-    if (!detail::in_rounded_range(q.m)) {
-        return 0;
-    }
-    const double det = detail::orient3d_rows_determinant(q.v[0], q.v[1], q.v[2]);
-    const double bound =
-        19.0 * q.eta * (q.big_m * q.big_m) + 31.0 * detail::kUnitRoundoff * (q.m * q.m * q.m);
-    return detail::rounded_sign(det, bound);
+    const auto r = orient3d_rounded_value(a, b, c, d);
+    return r ? detail::rounded_sign(r->value, r->bound) : 0;
 }
 
 /// The sign of insphere (insphere.h's convention) on the exact points, or 0 when undecided.

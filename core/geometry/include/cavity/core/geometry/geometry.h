@@ -73,6 +73,12 @@ public:
         return has_implicit() ? exact_[v] : GenericPoint3(points_[v]);
     }
 
+    /// Point v's doubles and a bound on their distance to the exact point in every coordinate
+    /// (0 when v is explicit), as the floating-point stages of the generic predicates take it.
+    predicates::RoundedPoint rounded(VertexId v) const {
+        return {points_[v], has_implicit() ? errors_[v] : 0.0};
+    }
+
     std::uint32_t key(VertexId v) const { return keys_[v]; }
 
     /// Hands the coordinates' array over, in vertex order, and leaves the geometry without
@@ -319,9 +325,6 @@ private:
                                                              const Point3& b,
                                                              const Point3& c,
                                                              const Point3& d) const;
-
-    /// Point v as the floating-point stage takes it (implicit geometries only).
-    predicates::RoundedPoint rounded(VertexId v) const { return {points_[v], errors_[v]}; }
 
     /// orient3d on the exact points (out of line: only geometries with implicit points call it).
     predicates::Verdict orient3d_generic(VertexId a, VertexId b, VertexId c, VertexId d) const;
