@@ -13,7 +13,8 @@
 // which finds only the points there whose coordinate is a multiple of that spacing (zero included).
 // Everything found is a double point of the segment: the spacing used is never finer than the
 // binade's. Between decimal doubles nearly every window holds no such point; a sieve of integer
-// congruences (double_point_sieve.h) says so first, without a rational.
+// congruences (double_point_sieve.h) says so first, without a rational. Along a segment where one
+// coordinate alone varies, the same search runs in double expansions (axis_protection_point.h).
 #include "protection_point.h"
 
 #include <algorithm>
@@ -23,6 +24,7 @@
 
 #include <boost/multiprecision/gmp.hpp>
 
+#include "axis_protection_point.h"
 #include "cavity/core/cdt/edge_protection.h"
 #include "double_point_sieve.h"
 
@@ -156,6 +158,10 @@ std::optional<Point3> protection_point(
     const double hi = std::min(hi_bound, 1.0);
     if (!(lo < hi) || !may_hold_double_point(a, b, lo, hi)) {
         return std::nullopt;
+    }
+    if (const AxisSearch axis = axis_protection_point(a, b, target, lo_bound, hi_bound);
+        axis.handled) {
+        return axis.point;
     }
     return rational_protection_point(a, b, target, lo_bound, hi_bound);
 }
