@@ -42,6 +42,17 @@ double upper(double x, double e) {
     return e == 0.0 ? x : std::nextafter(x + e, std::numeric_limits<double>::infinity());
 }
 
+/// A point's two coordinates kept by the projection and their errors, each made by
+/// axis(k, value, error), which says whether both are finite; nullopt when either is not.
+template <class Axis>
+std::optional<RoundedPoint2> projected(int drop, const Axis& axis) {
+    RoundedPoint2 x{};
+    if (!axis(u_axis(drop), x.u, x.error_u) || !axis(v_axis(drop), x.v, x.error_v)) {
+        return std::nullopt;
+    }
+    return x;
+}
+
 /// Whether corner p's exact v is above (true) or below (false) every v in [lo, hi]; nullopt when
 /// the intervals meet. Below excludes level: the exact test's "not above" includes it, and so
 /// the walk below never meets a level corner.
@@ -131,11 +142,7 @@ std::optional<RoundedPoint2> rounded_crossing(const std::array<Point3, 3>& plane
                 kUnderflow;
         return std::isfinite(x) && std::isfinite(error);
     };
-    RoundedPoint2 x{};
-    if (!axis(u_axis(drop), x.u, x.error_u) || !axis(v_axis(drop), x.v, x.error_v)) {
-        return std::nullopt;
-    }
-    return x;
+    return projected(drop, axis);
 }
 
 std::optional<RoundedPoint2> rounded_centroid(std::span<const RoundedPoint> points, int drop) {
@@ -162,11 +169,7 @@ std::optional<RoundedPoint2> rounded_centroid(std::span<const RoundedPoint> poin
                 kUnderflow;
         return std::isfinite(c) && std::isfinite(error);
     };
-    RoundedPoint2 x{};
-    if (!axis(u_axis(drop), x.u, x.error_u) || !axis(v_axis(drop), x.v, x.error_v)) {
-        return std::nullopt;
-    }
-    return x;
+    return projected(drop, axis);
 }
 
 std::optional<std::vector<RoundedPoint2>> rounded_loop(const Plc& plc,

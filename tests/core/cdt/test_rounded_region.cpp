@@ -14,6 +14,7 @@
 #include "../../../core/cdt/src/rounded_region.h"
 #include "cavity/core/base/random.h"
 #include "cavity/predicates/generic_filter.h"
+#include "plc_builders.h"
 
 namespace cavity::core {
 namespace {
@@ -69,11 +70,8 @@ TEST(RoundedRegion, CrossingIsWithinItsBoundOfTheExactCrossing) {
     for (const double scale : {1.0, 3.0e-7, 0x1p-120, 0x1p+120}) {
         Points points{Random(41), scale};
         for (int plane_trial = 0; plane_trial < 20; ++plane_trial) {
-            Plc plc;
-            plc.points.points = {points.input(), points.input(), points.input()};
-            PlcFacet facet;
-            facet.loops = {{0, 1, 2}};
-            plc.facets = {facet};
+            const Plc plc =
+                test::make_plc({points.input(), points.input(), points.input()}, {{{0, 1, 2}}});
             const auto plane = ExactPlane::of_facet(plc, plc.facets[0]);
             if (!plane) {
                 continue;  // collinear corners
