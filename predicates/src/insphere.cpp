@@ -31,8 +31,7 @@ Verdict insphere_slow(
     const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
     const std::array<Point3, 5> query = {a, b, c, d, e};
     // The first point alone before the others: most queries here have fractional coordinates.
-    if (is_small_integer(a) &&
-        (is_small_integer(b) & is_small_integer(c) & is_small_integer(d) & is_small_integer(e))) {
+    if (is_small_integer(a) && all_small_integers(b, c, d, e)) {
         LiftedRows rows{};
         for (int i = 0; i < 4; ++i) {
             rows.x[i] = query[i].x - query[4].x;

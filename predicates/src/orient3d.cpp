@@ -21,8 +21,7 @@ std::optional<Sign> orient3d_small_integers(const Point3& a,
                                             const Point3& c,
                                             const Point3& d) {
     // The first point alone before the others: most queries here have fractional coordinates.
-    if (!(is_small_integer(a) &&
-          (is_small_integer(b) & is_small_integer(c) & is_small_integer(d)))) {
+    if (!(is_small_integer(a) && all_small_integers(b, c, d))) {
         return std::nullopt;
     }
     const Point3 ad = translated(a, d);

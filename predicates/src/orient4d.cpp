@@ -39,8 +39,7 @@ Verdict orient4d_slow(const WeightedPoint3& a,
                       const WeightedPoint3& e) {
     const std::array<WeightedPoint3, 5> query = {a, b, c, d, e};
     // The first point alone before the others: most queries here have fractional coordinates.
-    if (is_small_integer(a) &&
-        (is_small_integer(b) & is_small_integer(c) & is_small_integer(d) & is_small_integer(e))) {
+    if (is_small_integer(a) && all_small_integers(b, c, d, e)) {
         LiftedRows rows{};
         for (int i = 0; i < 4; ++i) {
             rows.x[i] = query[i].x - query[4].x;

@@ -23,13 +23,28 @@ inline bool is_small_integer(double v) {
     return (std::abs(v) < 0x1p50) & ((v + kRoundToInteger) - kRoundToInteger == v);
 }
 
+// The tests are taken into locals and combined with `&`, not `&&`: one branch on the combined
+// answer (and no bitwise operator between calls, which clang warns about).
 inline bool is_small_integer(const Point3& p) {
-    return is_small_integer(p.x) & is_small_integer(p.y) & is_small_integer(p.z);
+    const bool x = is_small_integer(p.x);
+    const bool y = is_small_integer(p.y);
+    const bool z = is_small_integer(p.z);
+    return x & y & z;
 }
 
 inline bool is_small_integer(const WeightedPoint3& p) {
-    return is_small_integer(p.x) & is_small_integer(p.y) & is_small_integer(p.z) &
-           is_small_integer(p.w);
+    const bool x = is_small_integer(p.x);
+    const bool y = is_small_integer(p.y);
+    const bool z = is_small_integer(p.z);
+    const bool w = is_small_integer(p.w);
+    return x & y & z & w;
+}
+
+/// True when every point is a small integer point, tested without a branch between them (the
+/// fold is over unsigned values: `&` between bool calls draws clang's warning).
+template <class... Points>
+inline bool all_small_integers(const Points&... points) {
+    return ((static_cast<unsigned>(is_small_integer(points))) & ...) != 0u;
 }
 
 inline Sign sign_of(Int128 v) {

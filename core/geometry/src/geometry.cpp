@@ -101,10 +101,17 @@ void count(const perturbation::SosVerdict& v, PredicateKind kind, T& tally) {
 }
 
 /// True when the four points are integer points: the lattice routes' test that the plain
-/// determinant of these points is exact. `&`, not `&&`: one branch on the combined answer.
-bool all_integral(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
-    return predicates::is_integral(a) & predicates::is_integral(b) & predicates::is_integral(c) &
-           predicates::is_integral(d);
+/// determinant of these points is exact. `&`, not `&&`: one branch on the combined answer (the
+/// tests in locals first: clang warns of `&` between calls).
+[[gnu::always_inline]] inline bool all_integral(const Point3& a,
+                                                const Point3& b,
+                                                const Point3& c,
+                                                const Point3& d) {
+    const bool ia = predicates::is_integral(a);
+    const bool ib = predicates::is_integral(b);
+    const bool ic = predicates::is_integral(c);
+    const bool id = predicates::is_integral(d);
+    return ia & ib & ic & id;
 }
 
 }  // namespace
@@ -130,13 +137,6 @@ Sign Geometry::orient3d_on_lattice_or_exact(const Point3& a,
         return predicates::orient3d_on_lattice(a, b, c, d);
     }
     return predicates::orient3d(a, b, c, d);
-}
-
-predicates::Verdict Geometry::orient3d_staged_on_lattice(VertexId a,
-                                                         VertexId b,
-                                                         VertexId c,
-                                                         VertexId d) const {
-    return predicates::orient3d_staged_on_lattice(point(a), point(b), point(c), point(d));
 }
 
 predicates::Verdict Geometry::orient3d_staged_on_lattice_or_staged(const Point3& a,

@@ -48,8 +48,12 @@ inline constexpr double kLatticeMaxSpan = 715.0;
     return static_cast<double>(static_cast<std::int64_t>(v)) == v;
 }
 
+/// Branch-free: the three tests taken into locals and combined with `&`.
 [[gnu::always_inline]] inline bool is_integral(const Point3& p) {
-    return is_integral(p.x) & is_integral(p.y) & is_integral(p.z);
+    const bool x = is_integral(p.x);
+    const bool y = is_integral(p.y);
+    const bool z = is_integral(p.z);
+    return x & y & z;
 }
 
 /// True when integer points in the box [lo, hi] are an exact lattice: their extent along each
@@ -84,25 +88,29 @@ inline bool is_staged_lattice_box(const Point3& lo, const Point3& hi) {
 }
 
 /// orient3d_staged's verdict, sign and deciding stage, for integer points of an exact lattice box
-/// with coordinates below kLatticeStagedMagnitude (an unchecked precondition), without its work
-/// after the filter: the counting engine's route on grids, whose exact zeros would otherwise take
-/// the adaptive stage's integer arithmetic. The filter is orient3d_staged's; what it leaves,
-/// orient3d_slow decides at kAdaptive by exact small-integer arithmetic, and its sign is the plain
-/// determinant's, exact here (orient3d_filter evaluates the same determinant).
+/// with coordinates below kLatticeStagedMagnitude (an unchecked precondition), without its work:
+/// the counting engine's route on grids. A zero goes past orient3d_staged's filter (its test is
+/// |det| > bound, never met by 0) to orient3d_slow, which decides it at kAdaptive. Every other
+/// determinant the filter certifies, so the route needs neither its bound nor its guards: the
+/// differences are integers of magnitude at most kLatticeMaxSpan, so the filter's bound
+/// kOrient3dErrorBound * maxx * maxy * maxz is below 50 * 2^-53 * 715^3 < 3e-6 (and so is its
+/// rounded value), while a nonzero determinant of integers is at least 1 in magnitude and is
+/// computed exactly (orient3d_filter evaluates the same determinant); a zero column maximum makes
+/// the determinant 0, and the largest is at most 715, inside the filter's guards.
+static_assert(detail::kOrient3dErrorBound * kLatticeMaxSpan * kLatticeMaxSpan * kLatticeMaxSpan <
+                      0x1p-1 &&
+                  detail::kOrient3dMinMax <= 1.0 && kLatticeMaxSpan <= detail::kOrient3dMaxMax,
+              "orient3d's filter certifies every nonzero determinant of an exact lattice box");
+
 [[gnu::always_inline]] inline Verdict orient3d_staged_on_lattice(const Point3& a,
                                                                  const Point3& b,
                                                                  const Point3& c,
                                                                  const Point3& d) {
     const double det = detail::orient3d_determinant(a, b, c, d);
-    // The filter never certifies a zero (its test is |det| > bound), and zeros are most of what
-    // reaches here on a grid: they skip the filter's bound.
     if (det == 0.0) {
         return {Sign::kZero, Stage::kAdaptive};
     }
-    if (const int s = detail::orient3d_filter(a, b, c, d)) {
-        return {static_cast<Sign>(s), Stage::kFilter};
-    }
-    return {det > 0.0 ? Sign::kPos : Sign::kNeg, Stage::kAdaptive};
+    return {det > 0.0 ? Sign::kPos : Sign::kNeg, Stage::kFilter};
 }
 
 /// Sign of det[p-e, |p-e|^2] over p = a..d (as insphere) for integer points of an exact lattice

@@ -151,7 +151,8 @@ public:
             }
         } else {
             if (staged_lattice_) {
-                const auto verdict = orient3d_staged_on_lattice(a, b, c, d);
+                const auto verdict =
+                    predicates::orient3d_staged_on_lattice(point(a), point(b), point(c), point(d));
                 tally.count_predicate(PredicateKind::kOrient3d, verdict.stage);
                 return verdict.sign;
             }
@@ -313,14 +314,8 @@ private:
                                       const Point3& b,
                                       const Point3& c,
                                       const Point3& d) const;
-    /// The counted tests' orient3d on a staged lattice, of four vertices (out of line, to keep
-    /// the counting engine's inlined code as small as the plain engine's): orient3d_staged's
-    /// verdict.
-    predicates::Verdict orient3d_staged_on_lattice(VertexId a,
-                                                   VertexId b,
-                                                   VertexId c,
-                                                   VertexId d) const;
-    /// The same of four points in the box, as orient3d_on_lattice_or_exact.
+    /// The counted tests' orient3d on a staged lattice of four points in the box, as
+    /// orient3d_on_lattice_or_exact: orient3d_staged's verdict.
     predicates::Verdict orient3d_staged_on_lattice_or_staged(const Point3& a,
                                                              const Point3& b,
                                                              const Point3& c,
