@@ -207,6 +207,27 @@ bool deep_piece(const Point3& p, const Point3& q, const Point3& a, const Point3&
     return length2(p, q) < std::ldexp(length2(a, b), -2 * kShellDepth);
 }
 
+/// How near line pq, relative to |pq|, an encroaching input vertex must stand to aim the split
+/// of pq. Halving frees pq of a vertex at height h only when the pieces about its projection are
+/// about h long, some log2(|pq| / h) rounds of splits there, where one split in the window that
+/// frees pq of it does (split_target); an apex at a moderate height is better halved (see
+/// protect_edges_live). Steiner points over the CDT bench's 89 meshed models: 72711 halving every
+/// input reference, 72052 with 1/64 here (mpi_triang 850 -> 487, mpi 421 -> 147, femur
+/// 1056 -> 1042, no model more), 72051 with 1/100; from 1/32 on some models take more
+/// (couplingdown 1279 -> 1475 at 1/32), and 1/5 makes 74266 in all.
+constexpr double kHuggingHeight = 1.0 / 64;
+
+/// True when w stands within kHuggingHeight |pq| of the line through p and q, over pq's interior.
+/// In doubles: it only aims the split.
+bool hugs_piece(const Point3& p, const Point3& q, const Point3& w) {
+    const double dx = q.x - p.x, dy = q.y - p.y, dz = q.z - p.z;
+    const double wx = w.x - p.x, wy = w.y - p.y, wz = w.z - p.z;
+    const double length2 = dx * dx + dy * dy + dz * dz;
+    const double s = (wx * dx + wy * dy + wz * dz) / length2;
+    const double height2 = (wx * wx + wy * wy + wz * wz) / length2 - s * s;
+    return s > 0 && s < 1 && height2 < kHuggingHeight * kHuggingHeight;
+}
+
 /// Split point m rounded to the nearest doubles: in integers when its parameter is dyadic (every
 /// implicit split point's is), else, or on an exact tie, by the rationals.
 Point3 rounded_split_point(const GenericPoint3& m) {
@@ -459,14 +480,15 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
                                             std::to_string(max_points) + " points (" + name + ")"));
         }
         mesh.star(e[1], star_q);
-        // Only a split point aims the split (the window that frees the piece of it). An input
-        // vertex that encroaches is most often the apex of a skinny input triangle on pq: a
-        // split in its window stands about its height from it and starts cascades there, which
-        // halving does not (Steiner points over the CDT bench's 74 models: 37347 -> 33722). The
-        // sphere about a shared input vertex through the reference (concentric shells) made
-        // more points than halving on the bench as well, pinion most (1966 against 445).
-        // A split point on another PLC edge through an input end c of a deep piece (an acute
-        // angle at c, where splits keep converging) aims it at a concentric shell about c.
+        // A split point aims the split (the window that frees the piece of it). An input vertex
+        // that encroaches is most often the apex of a skinny input triangle on pq: a split in
+        // its window stands about its height from it and starts cascades there, which halving
+        // does not (Steiner points over the CDT bench's 74 models: 37347 -> 33722), unless it
+        // hugs pq (hugs_piece), where halving takes many rounds. The sphere about a shared
+        // input vertex through the reference (concentric shells) made more points than halving
+        // on the bench as well, pinion most (1966 against 445). A split point on another PLC
+        // edge through an input end c of a deep piece (an acute angle at c, where splits keep
+        // converging) aims it at a concentric shell about c.
         std::optional<Point3> reference;
         std::optional<std::uint32_t> shell_centre;
         const Edge segment = segment_of_piece(e);
@@ -482,6 +504,8 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
                     shell_centre = c;
                 }
             }
+        } else if (w && hugs_piece(p, q, plc.points.points[*w])) {
+            reference = plc.points.points[*w];
         }
         const GenericPoint3 gp = generic_point(plc.points, e[0]);
         const GenericPoint3 gq = generic_point(plc.points, e[1]);

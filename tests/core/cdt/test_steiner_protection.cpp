@@ -270,6 +270,27 @@ TEST(SteinerProtection, CheeseFanEndsOnConcentricShells) {
     EXPECT_TRUE(unprotected_edges(plc).empty());
 }
 
+/// Input vertices that hug a PLC edge (about 10^-4 of its length from it, on opposite sides, so
+/// that no sphere through its ends is empty) aim the splits at the windows that free the edge of
+/// them: a split each (2 points), where halving the pieces until neither encroaches took 8.
+TEST(SteinerProtection, InputVerticesHuggingAnEdgeAimItsSplits) {
+    Plc plc = test::make_plc({{0, 0, 0},
+                              {8, 0, 0},
+                              {3, 7, 1},
+                              {2, 3, 8},
+                              {2.5, 0.0008, 0.0003},
+                              {4.1, -0.0008, -0.0003}},
+                             {{{0, 2, 1}}, {{0, 1, 3}}, {{1, 2, 3}}, {{0, 3, 2}}});
+    const auto missing = unprotected_edges(plc);
+    ASSERT_NE(std::find(missing.begin(), missing.end(), Edge{0, 1}), missing.end());
+    const Protection protection = protect_edges(plc, 1000);
+    EXPECT_GE(protection.inserted.size(), 1u);
+    EXPECT_LE(protection.inserted.size(), 3u);
+    EXPECT_TRUE(unprotected_edges(plc).empty());
+    const Cdt cdt = build_cdt(plc, CdtOptions{true});
+    EXPECT_TRUE(validate_cdt(cdt.plc, cdt.tets).ok());
+}
+
 /// The shell about the centre end is the largest power of two not above 2/3 of the piece, within
 /// 2^-30 of its radius, at either end.
 TEST(SplitTarget, ShellsArePowersOfTwoAboutTheCentre) {
