@@ -133,6 +133,12 @@ double volume(const std::vector<core::Point3>& pts, const std::vector<core::Tet>
 void run_cdt(const CdtArgs& args) {
     core::SurfaceReading reading;
     core::Plc plc = core::read_plc(args.input, &reading, !args.keep_faces);
+    if (reading.unread_line > 0 && !args.quiet) {
+        std::fprintf(stderr,
+                     "cavity: note: %s:%zu: data after the faces the counts declare was not read\n",
+                     args.input.c_str(),
+                     reading.unread_line);
+    }
     if (reading.warped_faces > 0 && !args.quiet) {
         std::fprintf(stderr,
                      "cavity: note: %s: %zu polygon faces whose corners are not coplanar were cut "

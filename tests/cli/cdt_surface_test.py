@@ -3,7 +3,7 @@ OFF, OBJ, ASCII and binary STL, ASCII and binary PLY and TetGen .smesh meshes an
 and `cavity check --poly` validates the result; surfaces that bound no solid and malformed files
 are refused with exit status 1, their facets or lines named, and nothing written. A polygon face off
 its plane is cut into triangles; exactly coplanar neighbouring faces are merged unless --keep-faces;
---max-protection-points bounds edge protection."""
+--max-protection-points bounds edge protection; an OFF file is read as far as its counts declare."""
 
 import os
 import struct
@@ -177,6 +177,14 @@ with tempfile.TemporaryDirectory() as work:
             rows = [line.split() for line in f if line.strip() and not line.startswith("#")]
         assert int(rows[1 + int(rows[0][0])][0]) == facets, rows[1 + int(rows[0][0])]
         assert exact_volume(prefix) == 3, exact_volume(prefix)
+
+    # A face more than the counts declare (CGAL's prim.off has one): read as the counts say, as
+    # CGAL and TetGen read it, with a note naming the line where the unread data begins.
+    r, prefix = cdt("stray.off", off(POINTS, FACES) + "3 0 1 7\n")
+    assert r.returncode == 0, r.stderr
+    assert f"stray.off:{3 + len(POINTS) + len(FACES)}: data after the faces the counts declare " \
+        "was not read" in r.stderr, r.stderr
+    assert exact_volume(prefix) == 3, exact_volume(prefix)
 
     # --max-protection-points: a triangle whose side 8-9 needs one split, in a box; refused when
     # no split is allowed, meshed by default.

@@ -46,8 +46,10 @@ Plc read_plc(const std::filesystem::path& file,
     if (!is_surface_mesh_file(file)) {
         return read_poly(file);
     }
-    Plc plc = read_surface_mesh(file);
-    const SurfaceReading made = prepare_surface_mesh(plc, merge_coplanar_faces);
+    std::size_t unread_line = 0;
+    Plc plc = read_surface_mesh(file, &unread_line);
+    SurfaceReading made = prepare_surface_mesh(plc, merge_coplanar_faces);
+    made.unread_line = unread_line;
     if (reading != nullptr) {
         *reading = made;
     }

@@ -25,7 +25,7 @@ std::uint32_t corner(const TextSource& source,
 
 }  // namespace
 
-Plc read_off(const std::string& file, std::string_view bytes) {
+Plc read_off(const std::string& file, std::string_view bytes, std::size_t* unread_line) {
     const TextSource source(file);
     LineReader lines(bytes);
     if (!lines.next()) {
@@ -113,8 +113,11 @@ Plc read_off(const std::string& file, std::string_view bytes) {
         }
         add_surface_face(plc, std::move(corners), lines.number());
     }
-    if (lines.next()) {
-        source.fail(lines.number(), "data after the faces the counts declare");
+    // The counts delimit the mesh, as CGAL's and TetGen's readers take them: what follows is
+    // left unread (CGAL's own prim.off lists a stray triangle after the cube its counts declare),
+    // and the caller is told where it begins.
+    if (unread_line != nullptr) {
+        *unread_line = lines.next() ? lines.number() : 0;
     }
     return plc;
 }

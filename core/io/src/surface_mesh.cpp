@@ -34,13 +34,14 @@ std::string not_a_point(std::int64_t index, const Plc& plc) {
            std::to_string(base + plc.points.size() - 1) + ")";
 }
 
-Plc read_surface_mesh(const std::filesystem::path& file) {
+Plc read_surface_mesh(const std::filesystem::path& file, std::size_t* unread_line) {
     const std::string extension = lower_extension(file);
     const std::string name = file.string();
     const std::string bytes = read_file_bytes(file);
     Plc plc;
+    std::size_t unread = 0;
     if (extension == ".off") {
-        plc = read_off(name, bytes);
+        plc = read_off(name, bytes, &unread);
     } else if (extension == ".stl") {
         plc = read_stl(name, bytes);
     } else if (extension == ".obj") {
@@ -56,6 +57,9 @@ Plc read_surface_mesh(const std::filesystem::path& file) {
     }
     plc.source = name;
     plc.points.source = name;
+    if (unread_line != nullptr) {
+        *unread_line = unread;
+    }
     return plc;
 }
 

@@ -12,8 +12,9 @@
 
 namespace cavity::core {
 
-/// Each takes the file's name (for messages) and its bytes.
-Plc read_off(const std::string& file, std::string_view bytes);
+/// Each takes the file's name (for messages) and its bytes. read_off reads the vertices and faces
+/// its counts declare and sets `*unread_line` to the line where data after them begins (0: none).
+Plc read_off(const std::string& file, std::string_view bytes, std::size_t* unread_line);
 Plc read_stl(const std::string& file, std::string_view bytes);
 Plc read_obj(const std::string& file, std::string_view bytes);
 Plc read_ply_surface(const std::string& file, std::string_view bytes);

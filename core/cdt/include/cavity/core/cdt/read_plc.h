@@ -12,6 +12,7 @@ struct SurfaceReading {
     std::size_t warped_faces = 0;     ///< polygon faces cut into triangles
     std::size_t merged_faces = 0;     ///< faces merged into larger polygons
     std::size_t merged_polygons = 0;  ///< the polygons they were merged into
+    std::size_t unread_line = 0;      ///< an OFF file's data after its declared faces (0: none)
 };
 
 /// The input of `cavity cdt`, by extension (case-insensitive): a surface mesh (`.off`, `.stl`,
@@ -21,7 +22,8 @@ struct SurfaceReading {
 /// exactly coplanar are cut into triangles first (each keeps the face's number); then, unless
 /// `merge_coplanar_faces` is false, its exactly coplanar neighbouring faces are merged into
 /// polygons (merge_coplanar_facets: the flat faces of the solid, as TetGen does without -M).
-/// `reading`, when given, receives how many faces were cut and merged.
+/// `reading`, when given, receives how many faces were cut and merged, and where an OFF file's
+/// data after the faces its counts declare, which is not read, begins.
 /// \throws Error naming the file and the line, facet or defects of an unusable input.
 Plc read_plc(const std::filesystem::path& file,
              SurfaceReading* reading = nullptr,

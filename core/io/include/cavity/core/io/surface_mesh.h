@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 
 #include "cavity/core/input/plc.h"
@@ -14,7 +15,9 @@ bool is_surface_mesh_file(const std::filesystem::path& file);
 /// triangles stay separate polygons), with no segments, holes or regions.
 /// - `.off`: `OFF` (or `COFF`, `NOFF`, `CNOFF`, whose extra vertex fields are skipped), the counts
 ///   `<#vertices> <#faces> [<#edges>]`, the vertices, then `n i1 ... in [colour]` per face;
-///   points and faces numbered from 0.
+///   points and faces numbered from 0. Only the vertices and faces the counts declare are read,
+///   as CGAL's and TetGen's readers do: `unread_line`, when given, receives the line where data
+///   after them begins (0 when there is none, and for the other formats).
 /// - `.stl`: binary (an 80-byte header, a little-endian 32-bit count, 50 bytes per triangle; chosen
 ///   when the size agrees with the count) or ASCII (`solid ... facet ... outer loop, vertex x y z
 ///   ... endloop endfacet ... endsolid`). STL repeats coordinates instead of sharing vertices:
@@ -29,6 +32,6 @@ bool is_surface_mesh_file(const std::filesystem::path& file);
 /// (cdt/surface_validity.h) to name them all.
 /// \throws Error naming the file and the line (or, in binary data, the face and byte offset) of a
 /// malformed or truncated entry, a face with fewer than 3 corners or an index that is not a point.
-Plc read_surface_mesh(const std::filesystem::path& file);
+Plc read_surface_mesh(const std::filesystem::path& file, std::size_t* unread_line = nullptr);
 
 }  // namespace cavity::core
