@@ -220,11 +220,7 @@ constexpr double kHuggingHeight = 1.0 / 64;
 /// True when w stands within kHuggingHeight |pq| of the line through p and q, over pq's interior.
 /// In doubles: it only aims the split.
 bool hugs_piece(const Point3& p, const Point3& q, const Point3& w) {
-    const double dx = q.x - p.x, dy = q.y - p.y, dz = q.z - p.z;
-    const double wx = w.x - p.x, wy = w.y - p.y, wz = w.z - p.z;
-    const double length2 = dx * dx + dy * dy + dz * dz;
-    const double s = (wx * dx + wy * dy + wz * dz) / length2;
-    const double height2 = (wx * wx + wy * wy + wz * wz) / length2 - s * s;
+    const auto [s, height2] = projection_on_piece(p, q, w);
     return s > 0 && s < 1 && height2 < kHuggingHeight * kHuggingHeight;
 }
 

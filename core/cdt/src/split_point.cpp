@@ -61,6 +61,14 @@ SplitTarget around(double t) {
 
 }  // namespace
 
+ProjectionOnPiece projection_on_piece(const Point3& p, const Point3& q, const Point3& w) {
+    const Point3 d = minus(q, p);
+    const Point3 v = minus(w, p);
+    const double length2 = dot(d, d);
+    const double s = dot(v, d) / length2;
+    return {s, std::max(0.0, dot(v, v) / length2 - s * s)};
+}
+
 SplitTarget split_target(const Point3& p, const Point3& q, const std::optional<Point3>& reference) {
     if (!reference) {
         return around(0.5);
@@ -71,14 +79,10 @@ SplitTarget split_target(const Point3& p, const Point3& q, const std::optional<P
     // one such point but puts the new vertex nearest w, a feature of size h that later splits
     // around w must resolve; the point of the interval nearest the midpoint keeps the pieces even
     // and the new vertex as far from w as freeing the piece allows.
-    const Point3 d = minus(q, p);
-    const Point3 w = minus(*reference, p);
-    const double length2 = dot(d, d);
-    const double s = dot(w, d) / length2;
+    const auto [s, h2] = projection_on_piece(p, q, *reference);
     if (!(s > 0 && s < 1)) {
         return around(0.5);
     }
-    const double h2 = std::max(0.0, dot(w, w) / length2 - s * s);
     const double lo = s - kFreeingShare * h2 / (1 - s);
     const double hi = s + kFreeingShare * h2 / s;
     const double t = std::clamp(0.5, lo, hi);

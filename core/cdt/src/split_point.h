@@ -24,6 +24,15 @@ struct SplitTarget {
     double hi;
 };
 
+/// Where a point w stands beside piece pq, in units of |pq|: the parameter s of its projection on
+/// the line p + s (q - p), and its squared height over that line. In doubles: it aims splits only.
+struct ProjectionOnPiece {
+    double s;
+    double height2;
+};
+
+ProjectionOnPiece projection_on_piece(const Point3& p, const Point3& q, const Point3& w);
+
 /// Where the split of pq aims, computed in doubles (it needs no exactness): without a reference,
 /// the midpoint; else the parameter nearest 1/2 of those that leave the reference outside both
 /// pieces' diametral balls (its projection is one), with a window kept inside them. The midpoint
