@@ -2,8 +2,11 @@
 
 The models are the ones Debian packages ship (none of them written on this project): CGAL's data
 meshes (libcgal-demo, data.tar.gz: data/meshes/) and OpenSCAD's test STL files
-(openscad-testing-data). Nothing is copied into the repository: the script reads them from the
-installed packages, or from --models. Each model is read here only to classify it (closed: every
+(openscad-testing-data); and, unless --no-render, the solids of OpenSCAD's 3D test scripts in that
+package rendered to STL by Debian's `openscad` (constructive solid geometry: spheres, cones and
+extrusions cut by one another, the kind of model CAD users bring, and a corpus no tuning of cavity
+looked at before it was added). Nothing is copied into the repository: the script reads them from
+the installed packages, or from --models. Each model is read here only to classify it (closed: every
 edge in exactly two facets, no facet repeating a vertex) and to convert it to a TetGen .poly;
 `cavity cdt` is given the original file, which it reads itself.
 
@@ -38,6 +41,9 @@ CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
 OPENSCAD_DATA = "/usr/share/openscad"
 EXTENSIONS = (".off", ".stl", ".obj", ".ply")
 TOOLS = ["cavity", "cavity --protect", "tetgen -p", "tetgen -pY"]
+# OpenSCAD's test scripts whose solids are rendered (the 2D, import and export tests make none).
+RENDERED_SCRIPTS = ("testdata/scad/3D", "testdata/scad/bugs", "testdata/scad/misc")
+RENDER_TIMEOUT = 30  # seconds per script; a script that takes longer is left out
 
 
 class MeshError(Exception):
@@ -251,10 +257,40 @@ def write_poly(path, verts, faces):
 
 # ---------------------------------------------------------------- corpus
 
-def collect(extra, limit_faces, include_open):
+def render_scripts(work):
+    """OpenSCAD's 3D test scripts rendered to STL, two at a time: (name, path) of each rendered
+    solid, and (name, path, reason) of each script that made none."""
+    scripts = sorted(os.path.join(r, f) for d in RENDERED_SCRIPTS
+                     for r, _, fs in os.walk(os.path.join(OPENSCAD_DATA, d)) for f in fs if f.endswith(".scad"))
+
+    def render(script):
+        rel = os.path.relpath(script, os.path.join(OPENSCAD_DATA, "testdata/scad"))
+        name = "openscad-render/" + rel[:-len(".scad")] + ".stl"
+        out = os.path.join(work, name)
+        os.makedirs(os.path.dirname(out), exist_ok=True)
+        try:
+            # In the script's folder: scripts include and import files beside them.
+            r = subprocess.run(["openscad", "-o", out, script], cwd=os.path.dirname(script),
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=RENDER_TIMEOUT)
+            code = r.returncode
+        except subprocess.TimeoutExpired:
+            code = "timeout"
+        if code == 0 and os.path.isfile(out) and os.path.getsize(out) > 0:
+            return name, out, ""
+        return name, out, f"openscad made no solid of the script (exit {code})"
+
+    from concurrent.futures import ThreadPoolExecutor
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        results = list(pool.map(render, scripts))
+    return [(n, p) for n, p, why in results if not why], [r for r in results if r[2]]
+
+
+def collect(extra, limit_faces, include_open, rendered_scripts):
     """(name, path, facets, points or None, reason-not-run) per model, duplicates by content dropped."""
     work = tempfile.mkdtemp(prefix="cdt-bench-models-")
-    sources = []
+    sources, unrendered = [], []
+    if rendered_scripts:
+        sources, unrendered = render_scripts(work)
     if os.path.exists(CGAL_DATA):
         with tarfile.open(CGAL_DATA) as tar:
             for m in tar.getmembers():
@@ -273,8 +309,11 @@ def collect(extra, limit_faces, include_open):
         paths = [e] if os.path.isfile(e) else [os.path.join(r, f) for r, _, fs in sorted(os.walk(e))
                                                 for f in sorted(fs) if f.lower().endswith(EXTENSIONS)]
         sources += [("extra/" + os.path.basename(p), p) for p in paths]
-    seen, models = {}, []
-    for name, path in sorted(sources):
+    seen, models = {}, [(name, path, 0, None, why) for name, path, why in unrendered]
+    # Corpus by corpus, the shipped files first: a rendered solid that repeats a shipped STL file
+    # is the duplicate, and the shipped corpora stay as they were before rendering was added.
+    rank = {"cgal": 0, "openscad": 1, "openscad-render": 2}
+    for name, path in sorted(sources, key=lambda s: (rank.get(s[0].split("/")[0], 3), s[0])):
         digest = hashlib.sha256(open(path, "rb").read()).hexdigest()
         if digest in seen:
             models.append((name, path, 0, None, f"same file as {seen[digest]}"))
@@ -480,14 +519,20 @@ def fmt_row(r):
     return f"{r['status']}: {reason}"
 
 
-def round_spread(by, models, a, b):
-    """How the ratio of total wall times of tools a and b varies over the rounds of repeated runs."""
+def round_range(by, models, a, b):
+    """The lowest and highest ratio of total wall times of tools a and b over the rounds of repeated
+    runs; None with one round."""
     runs = [[[float(t) for t in by[(m, tool)]["runs"].split(";")] for m in models] for tool in (a, b)]
     rounds = min(len(r) for per_tool in runs for r in per_tool)
     if rounds < 2:
-        return ""
+        return None
     ratios = sorted(sum(r[k] for r in runs[0]) / sum(r[k] for r in runs[1]) for k in range(rounds))
-    return f"; round by round, from {ratios[0]:.2f} to {ratios[-1]:.2f}"
+    return ratios[0], ratios[-1]
+
+
+def round_spread(by, models, a, b):
+    spread = round_range(by, models, a, b)
+    return f"; round by round, from {spread[0]:.2f} to {spread[1]:.2f}" if spread else ""
 
 
 def report(rows, models, args, elapsed, load):
@@ -500,11 +545,17 @@ def report(rows, models, args, elapsed, load):
     p(f"Made by `bench/run_cdt_bench.sh{(' ' + ' '.join(args.passed)) if args.passed else ''}` "
       f"(`bench/cdt_bench.py`; every number on this page is written by it from `cdt.csv`). "
       f"Models: the closed surface meshes shipped by the Debian packages libcgal-demo (CGAL's "
-      f"`data/meshes/`) and openscad-testing-data (OpenSCAD's test STL files), read from the installed "
-      f"packages, none written on this project; duplicates by content and models that are not closed "
+      f"`data/meshes/`, names `cgal/`) and openscad-testing-data (OpenSCAD's test STL files, "
+      f"`openscad/`), read from the installed packages, none written on this project"
+      + ("" if args.no_render else
+         f"; and the solids of OpenSCAD's 3D test scripts in that package, rendered to STL by Debian's "
+         f"`openscad` {package_version('openscad')} (`openscad-render/`: constructive solid geometry, spheres, "
+         f"cones and extrusions cut by one another; a corpus added after the tuning of cavity's edge "
+         f"protection, which looked only at the other two)")
+      + f"; duplicates by content and models that are not closed "
       f"(every edge in exactly two facets)"
       + (f" and models over {args.max_faces} facets" if args.max_faces else "")
-      + f" are left out (listed below). `cavity cdt` reads each file itself; TetGen {tetgen_version()} gets the "
+      + f" are left out (listed below). `cavity cdt` reads each file itself; TetGen {package_version('tetgen')} gets the "
       f"script's conversion to `.poly`. Time limit {args.timeout:g} s per run. Each tool meshed each model "
       f"it meshes {args.repeat} time{'s' if args.repeat > 1 else ''}, the tools taking turns; the times "
       f"are the medians of those runs, wall and CPU (user + system) seconds of the process, on a "
@@ -561,6 +612,27 @@ def report(rows, models, args, elapsed, load):
             sb = sum(int(by[(m, b)]["steiner"]) for m in valid)
             p(f"  Of them, on the {len(valid)} where both meshes pass the exact check (a constrained "
               f"Delaunay tetrahedralization of the PLC): Steiner points {sa} against {sb}.")
+    corpora = sorted({m.split("/")[0] for m in run_names})
+    a, b = "cavity --protect", "tetgen -p"
+    if len(corpora) > 1:
+        p(f"\nBy corpus, `{a}` against `{b}` on the models both mesh, and on those of them where both "
+          f"meshes pass the exact check (valid both):\n")
+        p("| corpus | models | Steiner points | wall s | time ratio | valid both | Steiner points (valid both) |")
+        p("|---|---|---|---|---|---|---|")
+        for c in corpora:
+            both = [m for m in run_names if m.split("/")[0] == c
+                    and by.get((m, a), {}).get("status") == "meshed" and by.get((m, b), {}).get("status") == "meshed"]
+            if not both:
+                p(f"| `{c}/` | 0 | – | – | – | – | – |")
+                continue
+            valid = [m for m in both if by[(m, a)]["check"] == "valid" and by[(m, b)]["check"] == "valid"]
+            steiner = lambda ms, t: sum(int(by[(m, t)]["steiner"]) for m in ms)  # noqa: E731
+            ta = sum(float(by[(m, a)]["seconds"]) for m in both)
+            tb = sum(float(by[(m, b)]["seconds"]) for m in both)
+            spread = round_range(by, both, a, b)
+            rounds = f" (rounds {spread[0]:.2f} to {spread[1]:.2f})" if spread else ""
+            p(f"| `{c}/` | {len(both)} | {steiner(both, a)} against {steiner(both, b)} | {ta:.2f} against "
+              f"{tb:.2f} | {ta / tb:.2f}{rounds} | {len(valid)} | {steiner(valid, a)} against {steiner(valid, b)} |")
     reasons = Counter()
     for m in run_names:
         r = by.get((m, "cavity --protect"))
@@ -590,9 +662,9 @@ def report(rows, models, args, elapsed, load):
     return out.getvalue()
 
 
-def tetgen_version():
+def package_version(package):
     try:
-        out = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "tetgen"], capture_output=True, text=True)
+        out = subprocess.run(["dpkg-query", "-W", "-f=${Version}", package], capture_output=True, text=True)
         return out.stdout.strip() or "(version unknown)"
     except OSError:
         return "(version unknown)"
@@ -611,6 +683,8 @@ def main():
     ap.add_argument("--models", action="append", default=[],
                     help="also a surface-mesh file or a directory of them (repeatable)")
     ap.add_argument("--all", action="store_true", help="also run models that are not closed")
+    ap.add_argument("--no-render", action="store_true",
+                    help="leave out the solids of OpenSCAD's test scripts (rendered by `openscad`)")
     ap.add_argument("--cavity", default="build/release/cli/cavity", help="the cavity binary")
     ap.add_argument("--tetgen", default="/usr/bin/tetgen", help="the TetGen binary")
     ap.add_argument("--out", default="results/cdt", help="where cdt.csv and README.md are written")
@@ -634,11 +708,14 @@ def main():
         sys.exit("cdt_bench: no models: install libcgal-demo and openscad-testing-data, or give --models")
     if args.repeat < 1:
         ap.error("--repeat must be at least 1")
+    if not args.no_render and shutil.which("openscad") is None:
+        sys.exit("cdt_bench: no `openscad` to render OpenSCAD's test scripts: install Debian's openscad "
+                 "(bench/run_cdt_bench.sh does), or pass --no-render")
     args.cavity = os.path.abspath(args.cavity)
     load = os.getloadavg()
     load = f"{load[0]:.1f}"
     start = time.monotonic()
-    work, models = collect(args.models, args.max_faces, args.all)
+    work, models = collect(args.models, args.max_faces, args.all, not args.no_render)
     runnable = [m for m in models if m[3] is not None]
     if args.limit:
         keep = {m[0] for m in runnable[:args.limit]}

@@ -5,7 +5,8 @@
 # results/cdt/cdt.csv and results/cdt/README.md. A benchmark: not part of CI or the tests.
 #   bench/run_cdt_bench.sh [bench/cdt_bench.py options]   e.g. --timeout 120 --max-faces 20000
 # The models are not in the repository: this installs libcgal-demo (24 MB download; data.tar.gz,
-# CGAL's examples and demos) and openscad-testing-data (7 MB) when missing, and reads them there.
+# CGAL's examples and demos), openscad-testing-data (7 MB) and openscad (which renders the solids of
+# OpenSCAD's test scripts; --no-render leaves them out) when missing, and reads them there.
 # See `/usr/bin/python3 bench/cdt_bench.py --help` for the options.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,7 +16,7 @@ done
 build="${BUILD_DIR:-build/release}"
 scripts/install-deps.sh
 missing=()
-for p in libcgal-demo openscad-testing-data; do
+for p in libcgal-demo openscad-testing-data openscad; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then missing+=("$p"); fi
 done
 if [ ${#missing[@]} -gt 0 ]; then
