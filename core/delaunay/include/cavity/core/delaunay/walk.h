@@ -31,13 +31,18 @@ public:
         auto& tally = engine.tally();
         // Inserted points are in the box; a query of the live triangulation may not be.
         const bool in_box = geometry.in_box(p);
-        return stochastic_walk(
+        // The counting engine counts steps and tests here and adds them to the totals once per
+        // walk: the totals are behind a reference the tests' stage counts also write, so an
+        // increment there was a load and a store per step.
+        std::uint64_t steps = 0;
+        std::uint64_t orient_calls = 0;
+        const TetId found = stochastic_walk(
             engine.storage(),
             start,
             random_,
             [&](TetId, const TetVertices& v) {
                 if constexpr (Observer::kCounting) {
-                    ++tally.walk_steps;
+                    ++steps;
                 }
                 return is_ghost(v);  // entered through the hull triangle with p strictly in front
             },
@@ -46,7 +51,7 @@ public:
                     return false;
                 }
                 if constexpr (Observer::kCounting) {
-                    ++tally.walk_orient_calls;
+                    ++orient_calls;
                 }
                 const auto tri = facet_vertices(v, f);
                 const Point3& a = geometry.point(tri[0]);
@@ -55,6 +60,11 @@ public:
                 return (in_box ? geometry.orient3d_in_box(a, b, c, p, tally)
                                : Geometry::orient3d(a, b, c, p, tally)) == Sign::kNeg;
             });
+        if constexpr (Observer::kCounting) {
+            tally.walk_steps += steps;
+            tally.walk_orient_calls += orient_calls;
+        }
+        return found;
     }
 
 private:

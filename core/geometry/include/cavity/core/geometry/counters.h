@@ -71,8 +71,8 @@ struct Counters {
     std::array<std::array<std::uint64_t, predicates::kStageCount>, kPredicateKindCount>
         stage_calls{};
 
-    void count_predicate(PredicateKind kind, predicates::Stage stage) {
-        ++stage_calls[static_cast<std::size_t>(kind)][static_cast<std::size_t>(stage)];
+    void count_predicate(PredicateKind kind, predicates::Stage stage, std::uint64_t calls = 1) {
+        stage_calls[static_cast<std::size_t>(kind)][static_cast<std::size_t>(stage)] += calls;
     }
 };
 

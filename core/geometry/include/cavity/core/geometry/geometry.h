@@ -229,26 +229,11 @@ public:
     template <Tally T>
     [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t, VertexId u, T& tally) const {
         if constexpr (T::kCounting) {
-            // The plain engine's cascade below, counting the stage that decided: the static
-            // filter, then the staged predicate inline (its filter shares the static filter's
-            // determinant, as in the plain engine), then the tie-break.
-            if (plain_) {
-                if (const int s = insphere_static_.sign(
-                        point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u))) {
-                    tally.count_predicate(PredicateKind::kInsphere, predicates::Stage::kStatic);
-                    return s > 0;
-                }
-                if (lattice_) {
-                    // The static filter is exact on a lattice (its bound is 0): a tie, decided.
-                    tally.count_predicate(PredicateKind::kInsphere, predicates::Stage::kStatic);
-                    return tie_breaks_into(t, u, tally);
-                }
-                const predicates::Verdict exact = predicates::insphere_staged(
-                    point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
-                tally.count_predicate(PredicateKind::kInsphere, exact.stage);
-                return exact.sign != Sign::kZero ? exact.sign == Sign::kPos
-                                                 : tie_breaks_into(t, u, tally);
-            }
+            std::uint64_t decided_static = 0;
+            const bool in = conflicts_solid(t, u, tally, decided_static);
+            tally.count_predicate(
+                PredicateKind::kInsphere, predicates::Stage::kStatic, decided_static);
+            return in;
         } else {
             if (plain_) {
                 // The static filter first: most tests of a well-spread point set are decided by
@@ -267,6 +252,37 @@ public:
                 // known to be zero, and evaluating it again costs about 12% of a 50^3 grid's run.
                 return exact != Sign::kZero ? exact == Sign::kPos : tie_breaks_into(t, u);
             }
+        }
+        return conflicts_solid_exactly(t, u, tally);
+    }
+
+    /// conflicts_solid counted, with the insphere tests its static stage decides (nearly every
+    /// test of a well-spread point set, and every one on a lattice) added to `decided_static`
+    /// rather than to the tally: the engine's cavity search keeps that count in its own frame and
+    /// adds it to the tally once per insertion. An increment of the tally per test was a load of
+    /// the tally's address and a read-modify-write of its field in the search's hottest block.
+    /// The cascade is the plain engine's: the static filter, then the staged predicate inline
+    /// (its filter shares the static filter's determinant), then the tie-break.
+    [[gnu::always_inline]] bool conflicts_solid(const TetVertices& t,
+                                                VertexId u,
+                                                Counters& tally,
+                                                std::uint64_t& decided_static) const {
+        if (plain_) {
+            if (const int s = insphere_static_.sign(
+                    point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u))) {
+                ++decided_static;
+                return s > 0;
+            }
+            if (lattice_) {
+                // The static filter is exact on a lattice (its bound is 0): a tie, decided.
+                ++decided_static;
+                return tie_breaks_into(t, u, tally);
+            }
+            const predicates::Verdict exact = predicates::insphere_staged(
+                point(t[0]), point(t[1]), point(t[2]), point(t[3]), point(u));
+            tally.count_predicate(PredicateKind::kInsphere, exact.stage);
+            return exact.sign != Sign::kZero ? exact.sign == Sign::kPos
+                                             : tie_breaks_into(t, u, tally);
         }
         return conflicts_solid_exactly(t, u, tally);
     }
