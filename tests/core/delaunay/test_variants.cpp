@@ -6,6 +6,8 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -66,6 +68,9 @@ TEST_P(Variants, ValidAndIdenticalForEveryOrderLocatorAndStorage) {
         // those deleted (the bootstrap tetrahedron counts as created).
         EXPECT_EQ(tri.counters.tets_created - tri.counters.tets_deleted, tri.tets.size())
             << variant;
+        // And of its ghosts: one per hull triangle remains.
+        EXPECT_EQ(tri.counters.ghosts_created - tri.counters.ghosts_deleted, tri.hull_triangles)
+            << variant;
         const auto canon = canonical(tri.tets);
         if (reference.empty()) {
             reference = canon;
@@ -106,6 +111,74 @@ TEST(Variants, UniformPointsMatchAcrossStoragesAndLocators) {
     options.storage = StorageKind::kHash;
     EXPECT_EQ(canonical(core::triangulate(points, sequence, options).tets), reference);
     EXPECT_TRUE(core::validate(points, core::triangulate(points, sequence, options).tets).ok());
+}
+
+/// Counts the engine's tetrahedra through its per-tetrahedron hooks, independently of the
+/// totals it keeps: a deleted tetrahedron's kind is the one it was created with (ids are reused
+/// only after deletion).
+struct HookCounts : core::CountingObserver {
+    std::vector<char> ghost;  // by TetId, as created
+    std::uint64_t solids_created = 0;
+    std::uint64_t ghosts_created = 0;
+    std::uint64_t solids_deleted = 0;
+    std::uint64_t ghosts_deleted = 0;
+
+    void on_tet_created(core::TetId t, const core::TetVertices& v, std::uint64_t) {
+        if (ghost.size() <= t) {
+            ghost.resize(t + 1);
+        }
+        ghost[t] = core::is_ghost(v) ? 1 : 0;
+        ++(ghost[t] != 0 ? ghosts_created : solids_created);
+    }
+
+    void on_tet_deleted(core::TetId t, std::uint64_t) {
+        ++(ghost[t] != 0 ? ghosts_deleted : solids_deleted);
+    }
+};
+
+// The counting engine adds its tetrahedron and test counts once per insertion, from what the
+// cavity search kept in its own frame and from the insertion's lists (bowyer_watson.h); the
+// hooks see every tetrahedron one at a time. Both must agree, for each storage and locator, on
+// points in general position and on a grid whose ties the perturbation decides.
+TEST(Variants, CountersAgreeWithThePerTetrahedronHooks) {
+    const std::vector<std::pair<std::string, core::PointSet>> inputs{
+        {"ball", core::generate_points("ball", 2000, 7, core::WeightSpec{})},
+        {"grid", core::generate_points("grid", 1000, 7, core::WeightSpec{})}};
+    for (const auto& [name, points] : inputs) {
+        const auto sequence =
+            core::make_insertion_order(points.points, core::OrderOptions{}).sequence;
+        for (const auto& [locate_name, locate, locate_help] : core::kLocateKinds) {
+            for (const auto& [storage_name, storage, storage_help] : core::kStorageKinds) {
+                const std::string variant =
+                    name + " " + std::string(locate_name) + " " + std::string(storage_name);
+                core::TriangulateOptions options;
+                options.locate = locate;
+                options.storage = storage;
+                options.count = true;
+                HookCounts hooks;
+                const auto tri = core::triangulate_observed(points, sequence, options, hooks);
+                const core::Counters& c = tri.counters;
+                EXPECT_EQ(c.tets_created, hooks.solids_created) << variant;
+                EXPECT_EQ(c.ghosts_created, hooks.ghosts_created) << variant;
+                EXPECT_EQ(c.tets_deleted, hooks.solids_deleted) << variant;
+                EXPECT_EQ(c.ghosts_deleted, hooks.ghosts_deleted) << variant;
+                EXPECT_EQ(c.insertions, points.points.size() - 4) << variant;
+                // Every test the search made is one of the deleted tetrahedra but each
+                // insertion's first, or a face of its cavity (one new tetrahedron each).
+                EXPECT_EQ(c.dig_tests,
+                          hooks.solids_deleted + hooks.ghosts_deleted - c.insertions +
+                              hooks.solids_created + hooks.ghosts_created - 5)
+                    << variant;
+                EXPECT_GT(c.stage_calls[static_cast<std::size_t>(core::PredicateKind::kInsphere)]
+                                       [static_cast<std::size_t>(predicates::Stage::kStatic)],
+                          0u)
+                    << variant;
+                if (locate == LocateKind::kWalk) {
+                    EXPECT_GT(c.walk_steps, 0u) << variant;
+                }
+            }
+        }
+    }
 }
 
 // The name tables are what users type: each name parses to its own row, the names are distinct,
