@@ -285,6 +285,17 @@ def render_scripts(work):
     return [(n, p) for n, p, why in results if not why], [r for r in results if r[2]]
 
 
+def shipped_test_meshes():
+    """The mesh files of openscad-testing-data, as its package lists them: the `openscad` package
+    (installed to render the scripts) puts example meshes in the same folder, which are not part
+    of the corpus."""
+    r = subprocess.run(["dpkg-query", "-L", "openscad-testing-data"], capture_output=True, text=True)
+    if r.returncode != 0:
+        return []
+    return sorted(p for p in r.stdout.splitlines()
+                  if p.startswith(OPENSCAD_DATA + "/") and p.lower().endswith(EXTENSIONS) and os.path.isfile(p))
+
+
 def collect(extra, limit_faces, include_open, rendered_scripts):
     """(name, path, facets, points or None, reason-not-run) per model, duplicates by content dropped."""
     work = tempfile.mkdtemp(prefix="cdt-bench-models-")
@@ -300,11 +311,8 @@ def collect(extra, limit_faces, include_open, rendered_scripts):
                     with tar.extractfile(m) as src, open(dest, "wb") as out:
                         shutil.copyfileobj(src, out)
                     sources.append(("cgal/" + os.path.basename(m.name), dest))
-    for root, _, files in sorted(os.walk(OPENSCAD_DATA)):
-        for f in sorted(files):
-            if f.lower().endswith(EXTENSIONS):
-                p = os.path.join(root, f)
-                sources.append(("openscad/" + os.path.relpath(p, OPENSCAD_DATA), p))
+    for p in shipped_test_meshes():
+        sources.append(("openscad/" + os.path.relpath(p, OPENSCAD_DATA), p))
     for e in extra:
         paths = [e] if os.path.isfile(e) else [os.path.join(r, f) for r, _, fs in sorted(os.walk(e))
                                                 for f in sorted(fs) if f.lower().endswith(EXTENSIONS)]
@@ -535,6 +543,13 @@ def round_spread(by, models, a, b):
     return f"; round by round, from {spread[0]:.2f} to {spread[1]:.2f}" if spread else ""
 
 
+def totals(by, models, a, b, column):
+    """The sums of a CSV column over the given models for tools a and b: integers for Steiner
+    points, seconds otherwise."""
+    kind = int if column == "steiner" else float
+    return tuple(sum(kind(by[(m, tool)][column]) for m in models) for tool in (a, b))
+
+
 def report(rows, models, args, elapsed, load):
     run_names = [m[0] for m in models if m[3] is not None]
     skipped = [m for m in models if m[3] is None]
@@ -552,8 +567,8 @@ def report(rows, models, args, elapsed, load):
          f"`openscad` {package_version('openscad')} (`openscad-render/`: constructive solid geometry, spheres, "
          f"cones and extrusions cut by one another; a corpus added after the tuning of cavity's edge "
          f"protection, which looked only at the other two)")
-      + f"; duplicates by content and models that are not closed "
-      f"(every edge in exactly two facets)"
+      + "; duplicates by content and models that are not closed "
+      "(every edge in exactly two facets)"
       + (f" and models over {args.max_faces} facets" if args.max_faces else "")
       + f" are left out (listed below). `cavity cdt` reads each file itself; TetGen {package_version('tetgen')} gets the "
       f"script's conversion to `.poly`. Time limit {args.timeout:g} s per run. Each tool meshed each model "
@@ -595,12 +610,9 @@ def report(rows, models, args, elapsed, load):
         if not both:
             p(f"- `{a}` and `{b}` mesh no model in common.")
             continue
-        sa = sum(int(by[(m, a)]["steiner"]) for m in both)
-        sb = sum(int(by[(m, b)]["steiner"]) for m in both)
-        ta = sum(float(by[(m, a)]["seconds"]) for m in both)
-        tb = sum(float(by[(m, b)]["seconds"]) for m in both)
-        ca = sum(float(by[(m, a)]["cpu_seconds"]) for m in both)
-        cb = sum(float(by[(m, b)]["cpu_seconds"]) for m in both)
+        sa, sb = totals(by, both, a, b, "steiner")
+        ta, tb = totals(by, both, a, b, "seconds")
+        ca, cb = totals(by, both, a, b, "cpu_seconds")
         p(f"- On the {len(both)} models both `{a}` and `{b}` mesh: Steiner points {sa} against {sb}; "
           f"total wall time {ta:.2f} s against {tb:.2f} s (ratio {ta / tb:.2f}{round_spread(by, both, a, b)}); "
           f"CPU time {ca:.2f} s against {cb:.2f} s (ratio {ca / cb:.2f}).")
@@ -608,8 +620,7 @@ def report(rows, models, args, elapsed, load):
         # Steiner points of meshes that are one compare like with like.
         valid = [m for m in both if by[(m, a)]["check"] == "valid" and by[(m, b)]["check"] == "valid"]
         if a == "cavity --protect" and b == "tetgen -p" and valid and len(valid) < len(both):
-            sa = sum(int(by[(m, a)]["steiner"]) for m in valid)
-            sb = sum(int(by[(m, b)]["steiner"]) for m in valid)
+            sa, sb = totals(by, valid, a, b, "steiner")
             p(f"  Of them, on the {len(valid)} where both meshes pass the exact check (a constrained "
               f"Delaunay tetrahedralization of the PLC): Steiner points {sa} against {sb}.")
     corpora = sorted({m.split("/")[0] for m in run_names})
@@ -626,13 +637,13 @@ def report(rows, models, args, elapsed, load):
                 p(f"| `{c}/` | 0 | – | – | – | – | – |")
                 continue
             valid = [m for m in both if by[(m, a)]["check"] == "valid" and by[(m, b)]["check"] == "valid"]
-            steiner = lambda ms, t: sum(int(by[(m, t)]["steiner"]) for m in ms)  # noqa: E731
-            ta = sum(float(by[(m, a)]["seconds"]) for m in both)
-            tb = sum(float(by[(m, b)]["seconds"]) for m in both)
+            sa, sb = totals(by, both, a, b, "steiner")
+            va, vb = totals(by, valid, a, b, "steiner")
+            ta, tb = totals(by, both, a, b, "seconds")
             spread = round_range(by, both, a, b)
             rounds = f" (rounds {spread[0]:.2f} to {spread[1]:.2f})" if spread else ""
-            p(f"| `{c}/` | {len(both)} | {steiner(both, a)} against {steiner(both, b)} | {ta:.2f} against "
-              f"{tb:.2f} | {ta / tb:.2f}{rounds} | {len(valid)} | {steiner(valid, a)} against {steiner(valid, b)} |")
+            p(f"| `{c}/` | {len(both)} | {sa} against {sb} | {ta:.2f} against "
+              f"{tb:.2f} | {ta / tb:.2f}{rounds} | {len(valid)} | {va} against {vb} |")
     reasons = Counter()
     for m in run_names:
         r = by.get((m, "cavity --protect"))

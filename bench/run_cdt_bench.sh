@@ -10,13 +10,15 @@
 # See `/usr/bin/python3 bench/cdt_bench.py --help` for the options.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+packages=(libcgal-demo openscad-testing-data openscad)
 for arg in "$@"; do
   if [ "$arg" = "-h" ] || [ "$arg" = "--help" ]; then exec /usr/bin/python3 bench/cdt_bench.py --help; fi
+  if [ "$arg" = "--no-render" ]; then packages=(libcgal-demo openscad-testing-data); fi
 done
 build="${BUILD_DIR:-build/release}"
 scripts/install-deps.sh
 missing=()
-for p in libcgal-demo openscad-testing-data openscad; do
+for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then missing+=("$p"); fi
 done
 if [ ${#missing[@]} -gt 0 ]; then

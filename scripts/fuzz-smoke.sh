@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # A short libFuzzer run of every file reader (and the predicates), for CI: builds the fuzz preset
 # (clang, ASan + UBSan incl. float-cast-overflow, coverage-guided) and runs each target for
-# SECONDS (default 20), two at a time, from the seed files in fuzz/seeds/. A crash, sanitizer report, non-cavity
-# exception, leak or an allocation above 2 GB fails the run and leaves the reproducer in
-# build/fuzz/findings/.
+# SECONDS (default 20), two at a time, from the seed files in fuzz/seeds/. A crash, sanitizer
+# report, non-cavity exception, leak or an allocation above 2 GB fails the run and leaves the
+# reproducer in build/fuzz/findings/.
 #   scripts/fuzz-smoke.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -21,13 +21,15 @@ fuzz_one() {
     cp "fuzz/seeds/${target%_fuzz}"/* "$corpus"/
   fi
   echo "fuzz-smoke: $target for ${seconds} s" >&2
-  if ! "build/fuzz/fuzz/$target" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 \
-    -artifact_prefix="$findings/$target-" -print_final_stats=1 "$corpus" 2>"$findings/$target.log"; then
+  if ! "build/fuzz/fuzz/$target" -max_total_time="$seconds" -rss_limit_mb=2048 \
+    -timeout=10 -artifact_prefix="$findings/$target-" -print_final_stats=1 "$corpus" \
+    2>"$findings/$target.log"; then
     tail -40 "$findings/$target.log" >&2
     rm -rf "$corpus"
     return 1
   fi
-  grep -E "^stat::number_of_executed_units" "$findings/$target.log" | sed "s/^/$target /" >&2 || true
+  grep -E "^stat::number_of_executed_units" "$findings/$target.log" |
+    sed "s/^/$target /" >&2 || true
   rm -rf "$corpus"
 }
 # Two targets at a time (libFuzzer runs on one core; CI has two), each for the full SECONDS.
