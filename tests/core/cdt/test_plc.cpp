@@ -921,11 +921,14 @@ TEST(ExactPoint, ImplicitPointsEqualTheirDefinitionInEveryExponentRange) {
         const int e = lo + static_cast<int>(random.below(static_cast<std::uint64_t>(hi - lo + 1)));
         return (random.below(2) == 0 ? m : -m) * std::ldexp(1.0, e);
     };
-    for (const auto& [lo, hi] : {std::pair{-1074, -1000},
-                                 std::pair{-60, 60},
-                                 std::pair{-8, 8},
-                                 std::pair{900, 1000},
-                                 std::pair{-1074, 1000}}) {
+    for (const auto& range : {std::pair{-1074, -1000},
+                              std::pair{-60, 60},
+                              std::pair{-8, 8},
+                              std::pair{900, 1000},
+                              std::pair{-1074, 1000}}) {
+        // Named, not a structured binding: clang before 16 cannot capture bindings in a lambda.
+        const int lo = range.first;
+        const int hi = range.second;
         for (int i = 0; i < 300; ++i) {
             const auto point = [&] { return Point3{value(lo, hi), value(lo, hi), value(lo, hi)}; };
             double numerator = value(-40, 40);
