@@ -19,7 +19,7 @@ declare -A allowed=(
   [edit]="base input mesh geometry delaunay check predicates perturbation"
   [parallel]="base input mesh geometry delaunay predicates perturbation"
   [live]="base input mesh geometry delaunay check edit io parallel predicates perturbation"
-  [cdt]="base input mesh geometry delaunay check edit live io predicates perturbation boost gmp"
+  [cdt]="base input mesh order geometry delaunay check edit live io predicates perturbation boost gmp"
 )
 
 status=0

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <numeric>
 #include <optional>
 #include <queue>
 #include <string>
@@ -16,6 +15,7 @@
 #include "cavity/core/cdt/plc_validity.h"
 #include "cavity/core/live/delaunay_triangulation.h"
 #include "cavity/core/mesh/star.h"
+#include "cavity/core/order/insertion_order.h"
 #include "dyadic_point.h"
 #include "exact_plane.h"
 #include "split_point.h"
@@ -23,9 +23,12 @@
 namespace cavity::core {
 
 DelaunayTriangulation plc_delaunay(const Plc& plc) {
-    std::vector<std::uint32_t> sequence(plc.points.size());
-    std::iota(sequence.begin(), sequence.end(), 0u);
-    DelaunayTriangulation dt(plc.points, sequence, TriangulateOptions{});
+    // The engine's default order (BRIO along a Hilbert curve), not the input's: a surface mesh
+    // lists its vertices facet by facet, and in that order each point's cavity reaches far along
+    // the front of the points before it (on a 80397-point height field from OpenSCAD's tests, 21 M
+    // tetrahedra created and 13 s against 2 M and 0.6 s). The tetrahedra are the same in any order.
+    const InsertionOrder order = make_insertion_order(plc.points.points, OrderOptions{});
+    DelaunayTriangulation dt(plc.points, order.sequence, TriangulateOptions{});
     if (!dt.duplicates().empty()) {
         const auto& d = dt.duplicates().front();
         throw Error(located_message(plc.source,
@@ -273,9 +276,16 @@ public:
             star);
     }
 
-    /// Inserts the point with index point_count(), exactly `exact`, rounded `rounded`.
-    void insert(const GenericPoint3& exact, const Point3& rounded) {
-        const std::uint32_t key = dt_.insert(exact, rounded);
+    /// Inserts the point with index point_count(), exactly `exact`, rounded `rounded`, locating
+    /// it from a solid tetrahedron of `near` (the star of a vertex near it). The split points
+    /// are made shortest piece first, all over the model, so from the last insertion the walk
+    /// crossed the mesh: on an 80397-point height field this walk was most of the insertions'
+    /// time.
+    void insert(const GenericPoint3& exact, const Point3& rounded, std::span<const TetId> near) {
+        const ArrayStorage& storage = dt_.storage();
+        const auto solid = std::find_if(
+            near.begin(), near.end(), [&](TetId t) { return !is_ghost(storage.vertices(t)); });
+        const std::uint32_t key = dt_.insert(exact, rounded, solid != near.end() ? *solid : kNoTet);
         if (key + 1 != dt_.point_count()) {
             throw InternalError("internal error: a protection point repeats point " +
                                 std::to_string(key));
@@ -523,7 +533,7 @@ ProtectedDelaunay protect_edges_live(Plc& plc, std::size_t max_points) {
         if (!plc.points.exact.empty()) {
             plc.points.exact.push_back(*m);
         }
-        mesh.insert(*m, rounded);
+        mesh.insert(*m, rounded, star_p);
         result.inserted.push_back(id);
         split_at.emplace(edge_key(e[0], e[1]), id);
         segment_of.push_back(segment);

@@ -137,6 +137,15 @@ BowyerWatson<ArrayStorage, NullObserver>& DelaunayTriangulation::engine(State& s
     return *s.engine;
 }
 
+TetId DelaunayTriangulation::start_near(TetId near) const {
+    const ArrayStorage& storage = state_->storage;
+    if (near != kNoTet && near < storage.capacity() && storage.alive(near) &&
+        !is_ghost(storage.vertices(near))) {
+        return near;
+    }
+    return start_tet();
+}
+
 TetId DelaunayTriangulation::start_tet() const {
     const State& s = *state_;
     const TetId hint = s.engine ? s.engine->last_solid() : s.last_solid;
@@ -181,7 +190,7 @@ std::uint32_t DelaunayTriangulation::insert(const Point3& p, double weight) {
     if (!s.vertex_of.empty()) {
         s.vertex_of.push_back(kNoVertex);
     }
-    insert_keyed(p, weight, key);
+    insert_keyed(p, weight, key, kNoTet);
     return key;
 }
 
@@ -225,8 +234,8 @@ std::uint32_t DelaunayTriangulation::insert(const PointSet& batch,
     std::vector<std::uint32_t> kept(n);
     for (std::uint32_t row : sequence) {
         if (first[row] == row) {
-            kept[row] =
-                insert_keyed(batch.points[row], weights ? batch.weights[row] : 0.0, base + row);
+            kept[row] = insert_keyed(
+                batch.points[row], weights ? batch.weights[row] : 0.0, base + row, kNoTet);
         }
     }
     const std::size_t listed_before = s.duplicates.size();
@@ -242,16 +251,16 @@ std::uint32_t DelaunayTriangulation::insert(const PointSet& batch,
 }
 
 std::uint32_t DelaunayTriangulation::insert(const predicates::GenericPoint3& p,
-                                            const Point3& rounded) {
-    if (const auto* explicit_point = std::get_if<Point3>(&p)) {
-        return insert(*explicit_point);
-    }
+                                            const Point3& rounded,
+                                            TetId near) {
     State& s = *state_;
-    if (weighted()) {
+    const auto* explicit_point = std::get_if<Point3>(&p);
+    if (weighted() && explicit_point == nullptr) {
         throw Error("implicit points are unweighted: the triangulation is weighted");
     }
+    const Point3& located = explicit_point != nullptr ? *explicit_point : rounded;
     const std::uint32_t key = s.next_key;
-    if (!std::isfinite(rounded.x) || !std::isfinite(rounded.y) || !std::isfinite(rounded.z)) {
+    if (!std::isfinite(located.x) || !std::isfinite(located.y) || !std::isfinite(located.z)) {
         throw Error("point " + std::to_string(std::int64_t{key} + s.index_base) +
                     " has a non-finite coordinate");
     }
@@ -260,19 +269,24 @@ std::uint32_t DelaunayTriangulation::insert(const predicates::GenericPoint3& p,
     if (!s.vertex_of.empty()) {
         s.vertex_of.push_back(kNoVertex);
     }
-    return insert_appended(s.geometry.append_implicit(p, rounded, key), key);
+    if (explicit_point != nullptr) {
+        insert_keyed(*explicit_point, 0.0, key, near);
+        return key;
+    }
+    return insert_appended(s.geometry.append_implicit(p, rounded, key), key, near);
 }
 
 std::uint32_t DelaunayTriangulation::insert_keyed(const Point3& p,
                                                   double weight,
-                                                  std::uint32_t key) {
-    return insert_appended(state_->geometry.append(p, key, weight), key);
+                                                  std::uint32_t key,
+                                                  TetId near) {
+    return insert_appended(state_->geometry.append(p, key, weight), key, near);
 }
 
-std::uint32_t DelaunayTriangulation::insert_appended(VertexId u, std::uint32_t key) {
+std::uint32_t DelaunayTriangulation::insert_appended(VertexId u, std::uint32_t key, TetId near) {
     State& s = *state_;
     BowyerWatson<ArrayStorage, NullObserver>& bw = engine(s);
-    const TetId start = start_tet();
+    const TetId start = start_near(near);
     if (!s.vertex_of.empty()) {
         s.vertex_of[key] = u;
     }

@@ -176,6 +176,75 @@ TEST(DelaunayTriangulation, ImplicitInsertionsEqualTheBatch) {
     EXPECT_EQ(dt.insert(predicates::GenericPoint3(Point3{0.25, 0.5, 0.75}), Point3{}), all.size());
 }
 
+/// A start for the walk (CGAL's hint) changes where each point is looked for, never the result:
+/// implicit and explicit points inserted from live solid tetrahedra anywhere in the mesh, and from
+/// hints that cannot be used (none, a ghost, a dead or an unknown tetrahedron), give the batch's
+/// tetrahedra.
+TEST(DelaunayTriangulation, InsertionsFromAnyHintEqualTheBatch) {
+    const PointSet grid = generate_points("grid", 216, 5);
+    PointSet all = grid;
+    all.exact.assign(grid.points.begin(), grid.points.end());
+    DelaunayTriangulation dt = live_in_input_order(grid);
+    const auto find_tet = [&](std::size_t from, auto wanted) {
+        const ArrayStorage& storage = dt.storage();
+        for (std::size_t k = 0; k < storage.capacity(); ++k) {
+            const auto t = static_cast<TetId>((from + k) % storage.capacity());
+            if (wanted(storage, t)) {
+                return t;
+            }
+        }
+        return kNoTet;
+    };
+    const auto solid = [](const ArrayStorage& storage, TetId t) {
+        return storage.alive(t) && !is_ghost(storage.vertices(t));
+    };
+    const auto ghost = [](const ArrayStorage& storage, TetId t) {
+        return storage.alive(t) && is_ghost(storage.vertices(t));
+    };
+    const auto dead = [](const ArrayStorage& storage, TetId t) { return !storage.alive(t); };
+    std::size_t dead_hints = 0;
+    for (std::uint32_t i = 0; i < 60; ++i) {
+        const Point3& a = grid.points[(5 * i) % grid.size()];
+        // 6i + 91 is odd, so a and b differ; sevenths put no point on the grid (as above).
+        const Point3& b = grid.points[(11 * i + 91) % grid.size()];
+        const auto s = predicates::segment_parameter_point(a, b, 1 + i % 6, 7);
+        ASSERT_TRUE(s);
+        const double t = (1 + i % 6) / 7.0;
+        const Point3 rounded{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t};
+        TetId hint = kNoTet;
+        switch (i % 5) {
+            case 0:
+            case 1:
+                hint = find_tet(97 * i, solid);
+                ASSERT_NE(hint, kNoTet);
+                break;
+            case 2:
+                hint = find_tet(31 * i, ghost);
+                ASSERT_NE(hint, kNoTet);
+                break;
+            case 3:
+                hint = find_tet(13 * i, dead);
+                dead_hints += hint != kNoTet;
+                break;
+            default:
+                hint = static_cast<TetId>(dt.storage().capacity() + 7);
+                break;
+        }
+        // Every fourth point an explicit one, through the same call.
+        const predicates::GenericPoint3 p =
+            i % 4 == 3 ? predicates::GenericPoint3(Point3{rounded.x, rounded.y, rounded.z + 0.125})
+                       : predicates::GenericPoint3(*s);
+        const Point3 located = i % 4 == 3 ? std::get<Point3>(p) : rounded;
+        EXPECT_EQ(dt.insert(p, located, hint), all.size());
+        all.points.push_back(located);
+        all.exact.push_back(p);
+    }
+    EXPECT_GT(dead_hints, 0u);
+    EXPECT_TRUE(dt.duplicates().empty());
+    EXPECT_TRUE(dt.check(CheckLevel::kComplex).empty());
+    EXPECT_EQ(canonical(dt.tets()), canonical(live_in_input_order(all).tets()));
+}
+
 /// A batch inserted along a space-filling curve gives what row-by-row insertion gives: the same
 /// tetrahedra, and the same repeats, inside the batch and of earlier points, the lowest equal row
 /// kept whatever the order.

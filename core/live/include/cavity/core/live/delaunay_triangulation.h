@@ -74,9 +74,14 @@ public:
     /// point_count() before the call. `rounded` is its coordinates rounded to doubles, where the
     /// walk looks for it; every exact decision reads the definition. The first implicit point
     /// turns the triangulation's tests to the generic predicates. An implicit point never repeats
-    /// a vertex (as in triangulate()). \throws Error for a weighted triangulation or a non-finite
-    /// rounding (nothing changes).
-    std::uint32_t insert(const predicates::GenericPoint3& p, const Point3& rounded);
+    /// a vertex (as in triangulate()). `near`, as CGAL's hint cell: a live tetrahedron near p
+    /// where the walk that locates p starts (a point far from the last insertion is otherwise
+    /// walked to across the mesh); kNoTet, a dead or a ghost tetrahedron start it at the last
+    /// tetrahedron made. It changes no tetrahedron of the result. \throws Error for a weighted
+    /// triangulation or a non-finite rounding (nothing changes).
+    std::uint32_t insert(const predicates::GenericPoint3& p,
+                         const Point3& rounded,
+                         TetId near = kNoTet);
 
     /// Inserts every point of `batch` (with its weight when weighted), giving row r the input
     /// index point_count() + r, in the order `sequence` (a permutation of the rows: a
@@ -177,12 +182,14 @@ private:
     /// By vertex id: whether it is a vertex of a live tetrahedron (one pass over the storage).
     std::vector<bool> vertex_flags() const;
     void restart_after_edit();
-    /// Inserts p as input index `key` (already handed out); returns `key`, or the index of the
-    /// vertex it repeats.
-    std::uint32_t insert_keyed(const Point3& p, double weight, std::uint32_t key);
-    /// Inserts vertex u, already appended to the geometry with key `key`, located from the
-    /// walk's start; returns as insert_keyed.
-    std::uint32_t insert_appended(VertexId u, std::uint32_t key);
+    /// Inserts p as input index `key` (already handed out), located from start_near(near);
+    /// returns `key`, or the index of the vertex it repeats.
+    std::uint32_t insert_keyed(const Point3& p, double weight, std::uint32_t key, TetId near);
+    /// Inserts vertex u, already appended to the geometry with key `key`, located from
+    /// start_near(near); returns as insert_keyed.
+    std::uint32_t insert_appended(VertexId u, std::uint32_t key, TetId near);
+    /// near when it is a live solid tetrahedron, else start_tet().
+    TetId start_near(TetId near) const;
 
     std::unique_ptr<State> state_;
 };
