@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "cavity/predicates/orient2d.h"
 #include "cavity/predicates/orient3d.h"
 
 namespace cavity::core {
@@ -16,20 +17,23 @@ int orient(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
 
 }  // namespace
 
-// orient3d of the projected points (at z = 0) and the point (0, 0, 1): that determinant is the 2D
-// one up to sign, and exact since the projected coordinates are the input doubles.
+// The 2D orientation of the projected points, negated: the sign that orient3d of the points
+// lifted to z = 0 with (0, 0, 1) gives, which callers and tests were written against.
 int orient2d_projected(const Point3& a, const Point3& b, const Point3& c, int drop) {
-    const auto flat = [drop](const Point3& p) -> Point3 {
+    const auto flat = [drop](const Point3& p) -> std::array<double, 2> {
         switch (drop) {
             case 0:
-                return {p.y, p.z, 0.0};
+                return {p.y, p.z};
             case 1:
-                return {p.z, p.x, 0.0};
+                return {p.z, p.x};
             default:
-                return {p.x, p.y, 0.0};
+                return {p.x, p.y};
         }
     };
-    return orient(flat(a), flat(b), flat(c), {0.0, 0.0, 1.0});
+    const auto [au, av] = flat(a);
+    const auto [bu, bv] = flat(b);
+    const auto [cu, cv] = flat(c);
+    return -static_cast<int>(predicates::orient2d(au, av, bu, bv, cu, cv));
 }
 
 int projection_axis(const Point3& a, const Point3& b, const Point3& c) {
