@@ -261,12 +261,6 @@ def write_poly(path, verts, faces):
 
 # ---------------------------------------------------------------- corpus
 
-def limit_render_cpu():
-    """In the render's child process: SIGXCPU after RENDER_CPU_LIMIT CPU seconds (SIGKILL after
-    one more, should it ignore the first)."""
-    resource.setrlimit(resource.RLIMIT_CPU, (RENDER_CPU_LIMIT, RENDER_CPU_LIMIT + 1))
-
-
 def render_scripts(work):
     """OpenSCAD's 3D test scripts rendered to STL, two at a time: (name, path) of each rendered
     solid, and (name, path, reason) of each script that made none."""
@@ -280,9 +274,12 @@ def render_scripts(work):
         os.makedirs(os.path.dirname(out), exist_ok=True)
         try:
             # In the script's folder: scripts include and import files beside them.
-            r = subprocess.run(["openscad", "-o", out, script], cwd=os.path.dirname(script),
-                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                               timeout=RENDER_WALL_LIMIT, preexec_fn=limit_render_cpu)
+            # util-linux's prlimit sets the CPU limit (SIGXCPU, then SIGKILL a second later) and
+            # runs openscad; a preexec_fn would not be safe from these two threads.
+            cpu = f"--cpu={RENDER_CPU_LIMIT}:{RENDER_CPU_LIMIT + 1}"
+            r = subprocess.run(["prlimit", cpu, "openscad", "-o", out, script],
+                               cwd=os.path.dirname(script), stdout=subprocess.DEVNULL,
+                               stderr=subprocess.DEVNULL, timeout=RENDER_WALL_LIMIT)
             code = r.returncode
             if code == -signal.SIGXCPU or code == -signal.SIGKILL:
                 code = "CPU limit"

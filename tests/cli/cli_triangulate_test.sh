@@ -158,9 +158,10 @@ grep -q "domain (convex hull): [0-9]* tetrahedra kept, 0 removed, volume 0.87" l
   fail "carve: check --poly --convex-hull rejects the hull"
 "$cavity" check lhull.node lhull.ele --poly lprism.poly --quiet 2>/dev/null &&
   fail "carve: check --poly accepts the hull of the L as its domain"
-# Each tetrahedron of an .ele (the header and comments skipped) as the even permutation of its vertices that puts
-# the least first and the least of the others second: the same oriented tetrahedra give the same
-# sorted lines, whatever the storage's slot order or each record's rotation.
+# Each tetrahedron of an .ele (the header and comments skipped) as the even permutation of its
+# vertices that puts the least first and the least of the others second: the same oriented
+# tetrahedra give the same sorted lines, whatever the storage's slot order or each record's
+# rotation.
 oriented_tets() {
   awk '{ sub(/#.*/, "") } NF >= 5 { v[0] = $2; v[1] = $3; v[2] = $4; v[3] = $5
     m = 0; for (i = 1; i < 4; i++) if (v[i] + 0 < v[m] + 0) m = i
