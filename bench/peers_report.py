@@ -1,11 +1,13 @@
 """Summarises bench/peers_bench runs (peers.csv) as results/peers/README.md, and writes the same
 summary between the peers markers of the top README.
 
-usage: peers_report.py PEERS_CSV INPUTS LOAD [--readme README.md]
+usage: peers_report.py PEERS_CSV INPUTS LOAD [--readme README.md] [--hxt-source TEXT]
 INPUTS says what ran (the point count, or the point files). The Markdown goes to stdout; with
 --readme, the block between "<!-- peers:begin -->" and "<!-- peers:end -->" in that file is
-replaced by the summary lines (the file must have both).
+replaced by the summary lines (the file must have both). --hxt-source names the HXT source that
+was built (its gmsh version and a digest of its files), so that runs can be compared.
 """
+import argparse
 import csv
 import statistics
 import sys
@@ -21,10 +23,14 @@ COUNTING_GOAL = 1.05  # the instrumented engine's CPU time over the plain engine
 
 
 def main(argv):
-    if len(argv) not in (4, 6) or (len(argv) == 6 and argv[4] != "--readme"):
-        sys.exit(__doc__)
-    path, inputs, load = argv[1], argv[2], argv[3]
-    readme = argv[5] if len(argv) == 6 else None
+    parser = argparse.ArgumentParser(usage=__doc__)
+    parser.add_argument("peers_csv")
+    parser.add_argument("inputs")
+    parser.add_argument("load")
+    parser.add_argument("--readme")
+    parser.add_argument("--hxt-source", default="")
+    args = parser.parse_args(argv[1:])
+    path, inputs, load, readme = args.peers_csv, args.inputs, args.load, args.readme
     with open(path) as f:
         rows = list(csv.DictReader(f))
     names = list(dict.fromkeys(r["distribution"] for r in rows))
@@ -43,7 +49,8 @@ def main(argv):
                  if r["distribution"] == dist and r["engine"] == engine and r["peak_rss_bytes"] != "0"]
         return int(alone[0]["peak_rss_bytes"]) / 2**20 if alone else float("nan")
 
-    hxt_note = (" HXT (gmsh's `contrib/hxt`, built from the source given as `HXT_SOURCE`): "
+    built_from = f" ({args.hxt_source})" if args.hxt_source else ""
+    hxt_note = (f" HXT (gmsh's `contrib/hxt`, built from the source given as `HXT_SOURCE`{built_from}): "
                 "`hxtDelaunay` with its own ordering, on one thread and on the same thread count."
                 if has_hxt else " HXT was not timed (no `HXT_SOURCE` given).")
     out = ["# cavity against CGAL and HXT, and cavity's threads\n",

@@ -8,6 +8,8 @@
 #   bench/run_peers_bench.sh FILE...       the given point files (.node, .xyz, .ply), e.g. held out
 #   THREADS=T (default 2) threads for the parallel engines; REPEATS=R (default 3)
 #   HXT_SOURCE=<gmsh>/contrib/hxt          also time HXT, built from that source by bench/CMakeLists
+#                                          (the page names gmsh's version from <gmsh>/CMakeLists.txt
+#                                          and a digest of the HXT files)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repeats="${REPEATS:-3}"
@@ -44,6 +46,20 @@ for input in "${inputs[@]}"; do
   done
 done
 mv "$csv" "$out/peers.csv"
+# The HXT source, named so that runs can be compared: gmsh's version from the CMakeLists.txt two
+# folders up (when the source is a gmsh tree) and a digest of the files under contrib/hxt.
+hxt_source=""
+if [ -n "${HXT_SOURCE:-}" ]; then
+  gmsh_cmake="$HXT_SOURCE/../../CMakeLists.txt"
+  version=""
+  if [ -f "$gmsh_cmake" ]; then
+    version=$(sed -n 's/^set(GMSH_\(MAJOR\|MINOR\|PATCH\)_VERSION \([0-9]*\)).*/\2/p' "$gmsh_cmake" |
+      paste -sd.)
+  fi
+  digest=$(cd "$HXT_SOURCE" && find . -type f -print0 | LC_ALL=C sort -z | xargs -0 sha256sum |
+    sha256sum | cut -c1-12)
+  hxt_source="gmsh ${version:-of unknown version}, sha256 of its files $digest"
+fi
 /usr/bin/python3 bench/peers_report.py "$out/peers.csv" "$label" "$(uptime | sed 's/.*load average: //')" \
-  --readme README.md > "$out/README.md"
+  --readme README.md --hxt-source "$hxt_source" > "$out/README.md"
 cat "$out/README.md"
