@@ -137,6 +137,15 @@ BowyerWatson<ArrayStorage, NullObserver>& DelaunayTriangulation::engine(State& s
     return *s.engine;
 }
 
+void DelaunayTriangulation::hand_out_index() {
+    State& s = *state_;
+    ++s.next_key;
+    s.removed.push_back(false);
+    if (!s.vertex_of.empty()) {
+        s.vertex_of.push_back(kNoVertex);
+    }
+}
+
 TetId DelaunayTriangulation::start_near(TetId near) const {
     const ArrayStorage& storage = state_->storage;
     if (near != kNoTet && near < storage.capacity() && storage.alive(near) &&
@@ -185,11 +194,7 @@ std::uint32_t DelaunayTriangulation::insert(const Point3& p, double weight) {
         throw Error("point " + std::to_string(std::int64_t{key} + s.index_base) +
                     " has a non-finite coordinate or weight");
     }
-    ++s.next_key;
-    s.removed.push_back(false);
-    if (!s.vertex_of.empty()) {
-        s.vertex_of.push_back(kNoVertex);
-    }
+    hand_out_index();
     insert_keyed(p, weight, key, kNoTet);
     return key;
 }
@@ -264,11 +269,7 @@ std::uint32_t DelaunayTriangulation::insert(const predicates::GenericPoint3& p,
         throw Error("point " + std::to_string(std::int64_t{key} + s.index_base) +
                     " has a non-finite coordinate");
     }
-    ++s.next_key;
-    s.removed.push_back(false);
-    if (!s.vertex_of.empty()) {
-        s.vertex_of.push_back(kNoVertex);
-    }
+    hand_out_index();
     if (explicit_point != nullptr) {
         insert_keyed(*explicit_point, 0.0, key, near);
         return key;

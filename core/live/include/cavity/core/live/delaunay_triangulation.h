@@ -190,6 +190,9 @@ private:
     std::uint32_t insert_appended(VertexId u, std::uint32_t key, TetId near);
     /// near when it is a live solid tetrahedron, else start_tet().
     TetId start_near(TetId near) const;
+    /// Hands out the next input index (next_key) to a single inserted point: not removed, and
+    /// no vertex yet in the key-to-vertex map when there is one.
+    void hand_out_index();
 
     std::unique_ptr<State> state_;
 };
