@@ -39,11 +39,26 @@ std::optional<Sign> orient3d_small_integers(const Point3& a,
     return sign_of(det);
 }
 
+/// True when the four points lie in one plane perpendicular to a coordinate axis: a column of
+/// differences is zero, so the determinant is, whatever the other columns. The walls and floors of
+/// CAD models and height fields give these exact zeros by the thousand; with fractional
+/// coordinates the stages below prove each in full, in exact arithmetic when the other
+/// differences are inexact.
+bool on_axis_plane(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+    const bool x = (a.x == d.x) & (b.x == d.x) & (c.x == d.x);
+    const bool y = (a.y == d.y) & (b.y == d.y) & (c.y == d.y);
+    const bool z = (a.z == d.z) & (b.z == d.z) & (c.z == d.z);
+    return x | y | z;
+}
+
 }  // namespace
 
 // orient3d_staged_on_lattice (lattice.h) gives this function's verdict on lattices without
 // calling it: every small-integer query decided here at kAdaptive (lattice_test checks it).
 Verdict orient3d_slow(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+    if (on_axis_plane(a, b, c, d)) {
+        return {Sign::kZero, Stage::kAdaptive};
+    }
     if (const std::optional<Sign> s = orient3d_small_integers(a, b, c, d)) {
         return {*s, Stage::kAdaptive};
     }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "cavity/predicates/detail/expansion.h"
+#include "small_dyadic.h"
 #include "small_expansion.h"
 
 namespace cavity::predicates::detail {
@@ -119,6 +120,21 @@ std::optional<Verdict> orient3d_adaptive(const std::array<Point3, 4>& p) {
     two_diff(c.y, d.y, cdy, cdyt);
     two_diff(c.z, d.z, cdz, cdzt);
 
+    // The tails are multiples of 2^-332 below 2^250 here, so this sum of magnitudes is 0 exactly
+    // when every tail is: the differences are then exact, and most such queries are exact zeros
+    // (coplanar points on a coarse grid), which the stages below prove slowly.
+    const double tails = std::abs(adxt) + std::abs(adyt) + std::abs(adzt) + std::abs(bdxt) +
+                         std::abs(bdyt) + std::abs(bdzt) + std::abs(cdxt) + std::abs(cdyt) +
+                         std::abs(cdzt);
+    if (tails == 0.0) {
+        const double x[3] = {adx, bdx, cdx};
+        const double y[3] = {ady, bdy, cdy};
+        const double z[3] = {adz, bdz, cdz};
+        if (const std::optional<Sign> s = orient3d_small_dyadic(x, y, z)) {
+            return Verdict{*s, Stage::kAdaptive};
+        }
+    }
+
     // The double-double stage: almost every in-range query the filter leaves.
     const DoubleDouble exact_x[3] = {{adx, adxt}, {bdx, bdxt}, {cdx, cdxt}};
     const DoubleDouble exact_y[3] = {{ady, adyt}, {bdy, bdyt}, {cdy, cdyt}};
@@ -145,11 +161,7 @@ std::optional<Verdict> orient3d_adaptive(const std::array<Point3, 4>& p) {
     double det[25];
     const int det_len = expansion_sum(ab_sum_len, ab_sum, c_len, c_term, det);
 
-    // The tails are multiples of 2^-332 below 2^250 here, so this sum of magnitudes is 0 exactly
-    // when every tail is.
-    const double tails = std::abs(adxt) + std::abs(adyt) + std::abs(adzt) + std::abs(bdxt) +
-                         std::abs(bdyt) + std::abs(bdzt) + std::abs(cdxt) + std::abs(cdyt) +
-                         std::abs(cdzt);
+    // Exact differences: B is the determinant.
     if (tails == 0.0) {
         return Verdict{static_cast<Sign>(expansion_sign(det_len, det)), Stage::kAdaptive};
     }

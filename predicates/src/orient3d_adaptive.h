@@ -8,12 +8,14 @@
 #include "double_double.h"
 #include "staged_pipeline.h"
 
-// The stages of orient3d after the filter: the determinant of the exact differences (rounded +
-// tail) in double-double arithmetic under a certified bound, which settles almost every in-range
-// query; then Shewchuk's orient3dadapt, with bounds derived for this evaluation order: B, the
-// exact determinant of the rounded differences; C, B plus the first-order terms of the difference
-// tails in floating point, under a certified bound; D, the exact determinant of the
-// two-component differences.
+// The stages of orient3d after the filter: when the coordinate differences are exact, their
+// determinant in 64- and 128-bit integers if they lie on coarse grids (small_dyadic.h, the exact
+// zeros of coplanar grid points); the determinant of the exact differences (rounded + tail) in
+// double-double arithmetic under a certified bound, which settles almost every in-range query;
+// then Shewchuk's orient3dadapt, with bounds derived for this evaluation order: B, the exact
+// determinant of the rounded differences; C, B plus the first-order terms of the difference tails
+// in floating point, under a certified bound; D, the exact determinant of the two-component
+// differences.
 namespace cavity::predicates::detail {
 
 // Inputs with exponents in [-280, 300]: differences and their tails are multiples of 2^-332 below
@@ -30,8 +32,9 @@ std::optional<Sign> orient3d_double_double(const DoubleDouble (&x)[3],
                                            const DoubleDouble (&y)[3],
                                            const DoubleDouble (&z)[3]);
 
-/// The verdict of the double-double stage or stages B and C (kAdaptive), or D (kExact); none when
-/// D's expansions would outgrow their buffers. Requires inputs in kOrient3dAdaptiveWindow.
+/// The verdict of the small-dyadic evaluation, the double-double stage or stages B and C
+/// (kAdaptive), or D (kExact); none when D's expansions would outgrow their buffers. Requires
+/// inputs in kOrient3dAdaptiveWindow.
 std::optional<Verdict> orient3d_adaptive(const std::array<Point3, 4>& p);
 
 }  // namespace cavity::predicates::detail
