@@ -139,6 +139,64 @@ bool segment_meets_triangle_sided(const Point3& p,
     return !(negative && positive);
 }
 
+/// The closed triangles abc and def, coplanar and sharing no corner, meet: in the projection,
+/// a corner of one lies in the other or two sides cross at a point inside both (an extreme point of
+/// their convex intersection is one or the other). Eighteen orientations, each corner against
+/// each side of the other triangle, decide every case.
+bool coplanar_triangles_meet(const std::array<const Point3*, 3>& s,
+                             const std::array<const Point3*, 3>& t,
+                             int drop) {
+    // of_s[i][k]: corner k of t against side i (corners i, i + 1) of s; of_t likewise.
+    int of_s[3][3];
+    int of_t[3][3];
+    for (std::size_t i = 0; i < 3; ++i) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            of_s[i][k] = orient2d_projected(*s[i], *s[(i + 1) % 3], *t[k], drop);
+            of_t[i][k] = orient2d_projected(*t[i], *t[(i + 1) % 3], *s[k], drop);
+        }
+    }
+    const auto inside = [](const int(&sides)[3][3], std::size_t k) {
+        const int a = sides[0][k];
+        const int b = sides[1][k];
+        const int c = sides[2][k];
+        return !((a < 0 || b < 0 || c < 0) && (a > 0 || b > 0 || c > 0));
+    };
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (inside(of_s, k) || inside(of_t, k)) {
+            return true;
+        }
+    }
+    for (std::size_t i = 0; i < 3; ++i) {
+        for (std::size_t j = 0; j < 3; ++j) {
+            // Side i of s against side j of t: each side's ends strictly apart by the other.
+            if (of_s[i][j] * of_s[i][(j + 1) % 3] < 0 && of_t[j][i] * of_t[j][(i + 1) % 3] < 0) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+/// The triangles v p q and v r w, coplanar and sharing the corner v alone, meet elsewhere than at
+/// v exactly when their angles at v overlap: each triangle lies in its angle (below a half turn),
+/// and near v fills it. Two such angles overlap exactly when a side of one lies in the other
+/// (closed), since their overlap is an angle bounded by sides of the two.
+bool coplanar_angles_overlap(
+    const Point3& v, const Point3& p, const Point3& q, const Point3& r, const Point3& w, int drop) {
+    const int s_turn = orient2d_projected(v, p, q, drop);
+    const int t_turn = orient2d_projected(v, r, w, drop);
+    const int pr = orient2d_projected(v, p, r, drop);
+    const int pw = orient2d_projected(v, p, w, drop);
+    const int qr = orient2d_projected(v, q, r, drop);
+    const int qw = orient2d_projected(v, q, w, drop);
+    // x lies in the closed angle from a to b (turning `turn`) when neither side sees it outside.
+    const auto within = [](int turn, int from_a, int to_b) {
+        return from_a * turn >= 0 && to_b * turn >= 0;
+    };
+    return within(s_turn, pr, -qr) || within(s_turn, pw, -qw) || within(t_turn, -pr, pw) ||
+           within(t_turn, -qr, qw);
+}
+
 }  // namespace
 
 bool is_degenerate_triangle(const Point3& a, const Point3& b, const Point3& c) {
@@ -193,12 +251,22 @@ bool triangles_meet_improperly(const std::vector<Point3>& points,
             return orient2d_projected(p, q, a, drop) == orient2d_projected(p, q, b, drop);
         }
         case 1: {
+            const Point3& v = P[shared[0]];
+            const Point3& p = P[s_own[0]];
+            const Point3& q = P[s_own[1]];
+            const Point3& r = P[t_own[0]];
+            const Point3& w = P[t_own[1]];
+            const int sp = orient(v, r, w, p);
+            const int sq = orient(v, r, w, q);
+            if (sp == 0 && sq == 0) {
+                return coplanar_angles_overlap(v, p, q, r, w, projection_axis(v, p, q));
+            }
             // Their intersection is convex and holds the shared corner v; if it holds more, a ray
             // from v through it leaves each triangle through the side opposite v, and the nearer
             // exit lies in both triangles: so one opposite side meets the other triangle.
-            const Point3& v = P[shared[0]];
-            return segment_meets_triangle(P[s_own[0]], P[s_own[1]], v, P[t_own[0]], P[t_own[1]]) ||
-                   segment_meets_triangle(P[t_own[0]], P[t_own[1]], v, P[s_own[0]], P[s_own[1]]);
+            return segment_meets_triangle_sided(p, q, v, r, w, sp, sq) ||
+                   segment_meets_triangle_sided(
+                       r, w, v, p, q, orient(v, p, q, r), orient(v, p, q, w));
         }
         default:
             break;
@@ -210,10 +278,14 @@ bool triangles_meet_improperly(const std::vector<Point3>& points,
     const Point3& e = P[t[1]];
     const Point3& f = P[t[2]];
     // Each corner's side of the other triangle's plane, taken once: the side tests below ask for
-    // the same signs, and for coplanar triangles every one is a zero proved in exact arithmetic.
+    // the same signs. Coplanar triangles (every sign a zero, proved in exact arithmetic) are
+    // decided in a projection without the other three.
     const std::array<int, 3> st{orient(a, b, c, d), orient(a, b, c, e), orient(a, b, c, f)};
     if (st[0] != 0 && st[0] == st[1] && st[0] == st[2]) {
         return false;  // t strictly on one side of s's plane
+    }
+    if (st[0] == 0 && st[1] == 0 && st[2] == 0) {
+        return coplanar_triangles_meet({&a, &b, &c}, {&d, &e, &f}, projection_axis(a, b, c));
     }
     const std::array<int, 3> ss{orient(d, e, f, a), orient(d, e, f, b), orient(d, e, f, c)};
     if (ss[0] != 0 && ss[0] == ss[1] && ss[0] == ss[2]) {

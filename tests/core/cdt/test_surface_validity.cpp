@@ -459,5 +459,73 @@ TEST(TriangleIntersection, SymmetricUnderSwapsAndCornerOrder) {
     EXPECT_GT(met, 100);
 }
 
+// The definition, side by side: two triangles sharing at most one corner meet improperly when a
+// side of one meets the other anywhere but at that corner. Written from segment_meets_triangle
+// alone, with no coplanar shortcut, as the reference the shortcuts are checked against.
+bool meet_by_sides(const std::vector<Point3>& pts, const Triangle& s, const Triangle& t) {
+    std::vector<std::uint32_t> shared;
+    std::vector<std::uint32_t> s_own;
+    std::vector<std::uint32_t> t_own;
+    for (const std::uint32_t v : s) {
+        (std::find(t.begin(), t.end(), v) != t.end() ? shared : s_own).push_back(v);
+    }
+    for (const std::uint32_t v : t) {
+        if (std::find(s.begin(), s.end(), v) == s.end()) {
+            t_own.push_back(v);
+        }
+    }
+    const auto side_meets = [&](std::uint32_t p, std::uint32_t q, const Triangle& other) {
+        return segment_meets_triangle(pts[p], pts[q], pts[other[0]], pts[other[1]], pts[other[2]]);
+    };
+    switch (shared.size()) {
+        case 1:
+            return side_meets(s_own[0], s_own[1], t) || side_meets(t_own[0], t_own[1], s);
+        case 0:
+            return side_meets(s[0], s[1], t) || side_meets(s[1], s[2], t) ||
+                   side_meets(s[2], s[0], t) || side_meets(t[0], t[1], s) ||
+                   side_meets(t[1], t[2], s) || side_meets(t[2], t[0], s);
+        default:
+            ADD_FAILURE() << "only triangles sharing at most one corner are compared";
+            return false;
+    }
+}
+
+TEST(TriangleIntersection, CoplanarShortcutsAgreeWithTheSideTests) {
+    // Points of one tilted plane (z = x - 2y + 1/2 on a half-unit grid, so the coordinates are
+    // fractional and every orient3d among them is an exact zero) and a few just off it: coplanar
+    // triangles overlapping, touching at corners and along sides, nested and apart, with no corner
+    // and with one corner shared by index, against the definition by side tests.
+    Random random(33);
+    std::array<int, 2> met{};
+    std::array<int, 2> apart{};
+    for (int trial = 0; trial < 20000; ++trial) {
+        std::vector<Point3> pts;
+        for (int i = 0; i < 6; ++i) {
+            const double x = 0.5 * static_cast<double>(random.below(5));
+            const double y = 0.5 * static_cast<double>(random.below(5));
+            const double lift = random.below(8) == 0 ? 0.5 : 0.0;
+            pts.push_back({x, y, x - 2 * y + 0.5 + lift});
+        }
+        Triangle s{0, 1, 2};
+        Triangle t{3, 4, 5};
+        const std::size_t shared = trial % 2;
+        if (shared == 1) {
+            t[random.below(3)] = s[random.below(3)];
+        }
+        if (is_degenerate_triangle(pts[s[0]], pts[s[1]], pts[s[2]]) ||
+            is_degenerate_triangle(pts[t[0]], pts[t[1]], pts[t[2]])) {
+            continue;
+        }
+        const bool r = meet(pts, s, t);
+        ASSERT_EQ(r, meet_by_sides(pts, s, t)) << "trial " << trial;
+        ++(r ? met : apart)[shared];
+    }
+    // Both answers, with and without a shared corner.
+    EXPECT_GT(met[0], 1000);
+    EXPECT_GT(met[1], 1000);
+    EXPECT_GT(apart[0], 500);
+    EXPECT_GT(apart[1], 500);
+}
+
 }  // namespace
 }  // namespace cavity::core
