@@ -5,8 +5,8 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "surface_readers.h"
@@ -39,8 +39,24 @@ public:
 
 private:
     using Key = std::array<std::uint64_t, 3>;
+
+    /// The bits of the three coordinates mixed (splitmix64's finalizer on a combination): a
+    /// hash table, not an ordered map, since the index of first appearance is all that is kept.
+    struct KeyHash {
+        std::size_t operator()(const Key& k) const {
+            std::uint64_t h =
+                k[0] * 0x9e3779b97f4a7c15ULL ^ (k[1] + 0x632be59bd9b4e019ULL) ^ std::rotl(k[2], 31);
+            h ^= h >> 30;
+            h *= 0xbf58476d1ce4e5b9ULL;
+            h ^= h >> 27;
+            h *= 0x94d049bb133111ebULL;
+            h ^= h >> 31;
+            return static_cast<std::size_t>(h);
+        }
+    };
+
     Plc& plc_;
-    std::map<Key, std::uint32_t> index_;
+    std::unordered_map<Key, std::uint32_t, KeyHash> index_;
 };
 
 std::uint32_t little_endian_u32(std::string_view bytes, std::size_t at) {
@@ -86,19 +102,19 @@ Plc read_binary(const TextSource& source, std::string_view bytes) {
     return plc;
 }
 
-/// The fields of the next data line, which must start with the keyword `what`.
-std::vector<std::string_view> expect(const TextSource& source,
-                                     LineReader& lines,
-                                     std::string_view what) {
+/// Splits the next data line into `fields`, which must start with the keyword `what`.
+void expect(const TextSource& source,
+            LineReader& lines,
+            std::string_view what,
+            std::vector<std::string_view>& fields) {
     if (!lines.next()) {
         source.fail(lines.number(), "file ends where '" + std::string(what) + "' was expected");
     }
-    auto fields = split_whitespace(lines.text());
+    split_whitespace(lines.text(), fields);
     if (fields[0] != what) {
         source.fail(lines.number(),
                     "expected '" + std::string(what) + "', found '" + std::string(fields[0]) + "'");
     }
-    return fields;
 }
 
 Plc read_ascii(const TextSource& source, std::string_view bytes) {
@@ -106,8 +122,10 @@ Plc read_ascii(const TextSource& source, std::string_view bytes) {
     PointMerger merger(plc);
     LineReader lines(bytes);
     bool in_solid = false;
+    // One buffer of fields for every line: a file has seven lines a triangle.
+    std::vector<std::string_view> fields;
     while (lines.next()) {
-        const auto fields = split_whitespace(lines.text());
+        split_whitespace(lines.text(), fields);
         if (!in_solid) {
             if (fields[0] != "solid") {
                 source.fail(lines.number(),
@@ -131,8 +149,8 @@ Plc read_ascii(const TextSource& source, std::string_view bytes) {
         // The normal is not used (the corners' order gives the orientation), and exporters write
         // "nan" for it on degenerate triangles: such a file is refused by the surface check, which
         // names the facet, rather than here for a number nothing reads.
-        const auto outer = expect(source, lines, "outer");
-        if (outer.size() != 2 || outer[1] != "loop") {
+        expect(source, lines, "outer", fields);
+        if (fields.size() != 2 || fields[1] != "loop") {
             source.fail(lines.number(), "expected 'outer loop'");
         }
         std::vector<std::uint32_t> corners;
@@ -141,7 +159,8 @@ Plc read_ascii(const TextSource& source, std::string_view bytes) {
                 source.fail(lines.number(),
                             "file ends in the facet of line " + std::to_string(facet_line));
             }
-            const auto v = split_whitespace(lines.text());
+            split_whitespace(lines.text(), fields);
+            const auto& v = fields;
             if (v[0] == "endloop") {
                 break;
             }
@@ -157,7 +176,7 @@ Plc read_ascii(const TextSource& source, std::string_view bytes) {
                         "the facet of line " + std::to_string(facet_line) + " has " +
                             std::to_string(corners.size()) + " vertices; a facet needs 3");
         }
-        expect(source, lines, "endfacet");
+        expect(source, lines, "endfacet", fields);
         add_surface_face(plc, std::move(corners), facet_line);
     }
     if (in_solid) {
