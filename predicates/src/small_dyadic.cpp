@@ -26,19 +26,24 @@ double scale_for(double largest, int bits) {
 }
 
 /// True when every entry scaled by `scale` is an integer (and none underflows to zero): then the
-/// largest lands below 2^bits and the scaled entries are the integers sought. A scaled value of
-/// 2^52 or more is an integer; below, adding 1.5 * 2^52 rounds it to one, so the round trip
-/// returns it exactly when it is one (as is_small_integer).
+/// largest lands below 2^bits and the scaled entries are the integers sought. Below 2^63 in
+/// magnitude a double converts to a 64-bit integer by truncation, exactly, so the round trip
+/// returns it exactly when it is an integer (as lattice.h's is_integral). The rounding test of
+/// is_small_integer, adding and subtracting 1.5 * 2^52, would not do: it holds only below 2^51,
+/// and a wide column has entries up to 2^62.
 bool scaled_integers(const double (&column)[3], double scale, std::int64_t (&out)[3]) {
-    constexpr double kRoundToInteger = 0x1.8p52;
-    bool integral = true;
     for (int i = 0; i < 3; ++i) {
         const double v = column[i] * scale;
-        integral &= ((std::abs(v) >= 0x1p52) | ((v + kRoundToInteger) - kRoundToInteger == v)) &
-                    ((v != 0.0) | (column[i] == 0.0));
-        out[i] = integral ? static_cast<std::int64_t>(v) : 0;
+        if (!(std::abs(v) < 0x1p62)) {
+            return false;  // NaN too
+        }
+        const auto n = static_cast<std::int64_t>(v);
+        if (static_cast<double>(n) != v || (n == 0 && column[i] != 0.0)) {
+            return false;
+        }
+        out[i] = n;
     }
-    return integral;
+    return true;
 }
 
 Width column_width(const double (&column)[3], std::int64_t (&out)[3]) {

@@ -206,6 +206,12 @@ TEST(SmallDyadic, RefusesWiderColumnsAndValuesOffTheNormalRange) {
     EXPECT_TRUE(orient3d_small_dyadic(x, y, z).has_value());
     x[1] = 0x1p62;  // bits 0 to 62
     EXPECT_FALSE(orient3d_small_dyadic(x, y, z).has_value());
+    // Scaled by 1 beside 2^61, -(2^51 + 1/2) is no integer, though adding and subtracting
+    // 1.5 * 2^52 (the integer test of values below 2^51) would return it unchanged.
+    x[0] = 0x1p61;
+    x[1] = -(0x1p51 + 0.5);
+    EXPECT_FALSE(orient3d_small_dyadic(x, y, z).has_value());
+    x[0] = 1;
     x[1] = 0x1p-1000;  // underflows to zero when its column is scaled to 2^1000: refused
     x[0] = 0x1p1000;
     EXPECT_FALSE(orient3d_small_dyadic(x, y, z).has_value());
