@@ -112,8 +112,11 @@ lines += [
     "The adaptive stage now starts with a certified double-double evaluation from the exact",
     "differences (head + tail), which settles almost every near-degenerate query; stages B (exact",
     "expansion of the rounded-difference determinant) and C (first-order tails) follow only for the",
-    "few it leaves. Rows outside this section are unchanged code paths (filters, small-integer path)",
-    "and move with the load only.",
+    "few it leaves. orient3d's stages after the filter first ask whether the four points lie in a",
+    "plane perpendicular to an axis (a zero at once) and, when the differences are exact, evaluate",
+    "grid points in 64- and 128-bit integers (predicates/src/small_dyadic.h): the near_degenerate",
+    "sets on a plane z = c moved along x or y are decided by the first now, not by the exact stage.",
+    "Rows outside this section are the filters and the small-integer path and move with the load.",
 ]
 open(readme_path, "w").write("\n".join(lines) + "\n")
 
