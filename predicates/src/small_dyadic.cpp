@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdint>
 
+#include "cavity/predicates/lattice.h"
 #include "small_integers.h"
+#include "staged_pipeline.h"
 
 namespace cavity::predicates::detail {
 
@@ -15,33 +17,27 @@ namespace {
 enum class Width { kNarrow, kWide, kOther };
 
 /// 2^(bits - 1 - t) for the column's largest magnitude in [2^t, 2^(t+1)), which brings it into
-/// [2^(bits - 1), 2^bits); 0 when that scale or t is not a normal exponent (built from its bits).
+/// [2^(bits - 1), 2^bits); 0 when t or that exponent is not a normal one.
 double scale_for(double largest, int bits) {
     const auto biased = static_cast<int>((std::bit_cast<std::uint64_t>(largest) >> 52) & 0x7ff);
-    const int scale_biased = 2 * 1023 + (bits - 1) - biased;
-    if (biased == 0 || biased == 0x7ff || scale_biased <= 0 || scale_biased >= 0x7ff) {
+    const int k = (bits - 1) - (biased - 1023);
+    if (biased == 0 || biased == 0x7ff || k < -1022 || k > 1023) {
         return 0.0;
     }
-    return std::bit_cast<double>(static_cast<std::uint64_t>(scale_biased) << 52);
+    return power_of_two(k);
 }
 
 /// True when every entry scaled by `scale` is an integer (and none underflows to zero): then the
-/// largest lands below 2^bits and the scaled entries are the integers sought. Below 2^63 in
-/// magnitude a double converts to a 64-bit integer by truncation, exactly, so the round trip
-/// returns it exactly when it is an integer (as lattice.h's is_integral). The rounding test of
-/// is_small_integer, adding and subtracting 1.5 * 2^52, would not do: it holds only below 2^51,
-/// and a wide column has entries up to 2^62.
+/// largest lands below 2^bits and the scaled entries are the integers sought. is_integral's round
+/// trip through a 64-bit integer answers at any magnitude; the rounding test of is_small_integer
+/// (adding and subtracting 1.5 * 2^52) holds only below 2^51, and a wide column reaches 2^62.
 bool scaled_integers(const double (&column)[3], double scale, std::int64_t (&out)[3]) {
     for (int i = 0; i < 3; ++i) {
         const double v = column[i] * scale;
-        if (!(std::abs(v) < 0x1p62)) {
-            return false;  // NaN too
+        if (!(std::abs(v) < 0x1p62) || !is_integral(v) || (v == 0.0 && column[i] != 0.0)) {
+            return false;  // NaN fails the first test
         }
-        const auto n = static_cast<std::int64_t>(v);
-        if (static_cast<double>(n) != v || (n == 0 && column[i] != 0.0)) {
-            return false;
-        }
-        out[i] = n;
+        out[i] = static_cast<std::int64_t>(v);
     }
     return true;
 }

@@ -23,7 +23,9 @@ int projection_axis(const Point3& a, const Point3& b, const Point3& c);
 /// True when the corners are collinear (or two coincide): the triangle has zero area. Exact.
 bool is_degenerate_triangle(const Point3& a, const Point3& b, const Point3& c);
 
-/// True when the closed segment pq and the closed triangle abc (not degenerate) share a point.
+/// True when the closed segment pq and the closed triangle abc (not degenerate) share a point:
+/// the side test by which triangles_meet_improperly is defined (its tests check the coplanar
+/// shortcuts against it).
 bool segment_meets_triangle(
     const Point3& p, const Point3& q, const Point3& a, const Point3& b, const Point3& c);
 
